@@ -1,0 +1,30 @@
+// errors.h — the exception types conformesh throws, and how they name what went wrong.
+//
+// Every error a user can cause (bad file, bad mesh, bad parameter, a flow that does not converge) is reported by one of
+// these, with a message that says where (file, line, element) and what was expected versus found. The CLI catches them,
+// prints the message on one line and exits non-zero; library users catch them by type.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace conformesh {
+
+// Malformed or inadmissible input: a file that cannot be parsed, a mesh that is not a manifold, a length that is NaN.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An iterative method stopped without reaching its tolerance (Newton, flipping, refinement caps).
+class ConvergenceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Formats "where: what" with an optional source name, e.g. "mesh.obj:12: face 7 repeats vertex 3".
+inline std::string describeAt(const std::string& source, const std::string& what) {
+  return source.empty() ? what : source + ": " + what;
+}
+
+}  // namespace conformesh
