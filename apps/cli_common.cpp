@@ -1,0 +1,43 @@
+// cli_common.cpp — shared plumbing of the conformesh subcommands (see cli_common.h).
+#include "cli_common.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/mesh_io.h"
+
+namespace conformesh::apps {
+
+namespace {
+bool gQuiet = false;
+}
+
+void printJson(const nlohmann::json& j) { std::cout << j.dump(2) << '\n'; }
+
+void progress(const std::string& what) {
+  if (!gQuiet) std::cerr << "conformesh: " << what << std::endl;
+}
+
+void setQuiet(bool quiet) { gQuiet = quiet; }
+
+intrinsic::MeshData loadMesh(const std::string& path) { return intrinsic::readMesh(path); }
+
+std::map<std::string, double> parseParameters(const std::vector<std::string>& args) {
+  std::map<std::string, double> params;
+  for (const std::string& a : args) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--param '" + a + "': expected key=value, e.g. --param a=0.95");
+    const std::string key = a.substr(0, eq), value = a.substr(eq + 1);
+    char* end = nullptr;
+    const double x = std::strtod(value.c_str(), &end);
+    if (value.empty() || *end != '\0' || !std::isfinite(x))
+      throw InputError("--param '" + a + "': the value '" + value + "' is not a finite number");
+    if (!params.emplace(key, x).second) throw InputError("--param '" + key + "' is given twice");
+  }
+  return params;
+}
+
+}  // namespace conformesh::apps

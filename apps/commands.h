@@ -1,0 +1,12 @@
+// commands.h — the conformesh subcommands. Each lives in its own <name>_command.cpp, registers itself on the root
+// CLI11 app, parses and prints, and leaves every computation to the libraries.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace conformesh::apps {
+
+void registerInfoCommand(CLI::App& app);
+void registerGenerateCommand(CLI::App& app);
+
+}  // namespace conformesh::apps

@@ -1,0 +1,43 @@
+// main.cpp — the `conformesh` command: a root CLI11 app with one subcommand per pipeline stage. Library errors become
+// one line on stderr ("conformesh: error: FILE:LINE: ...") and exit status 1; command-line mistakes exit 2.
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "cli_common.h"
+#include "commands.h"
+#include "conformesh/intrinsic/errors.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "conformesh: intrinsic surface meshing with curvature convergence.\n"
+      "A surface comes in as a Riemannian metric or as a triangulation with edge lengths; conformesh uniformizes it\n"
+      "by discrete Ricci flow, refines it by Delaunay refinement graded by the conformal factor, and checks that the\n"
+      "output's Gaussian curvature measure converges (Li, Zeng, Morvan, Chen, Gu, TVCG 2013).\n"
+      "Run `conformesh <command> --help` for each command; docs/cli.md has worked examples.",
+      "conformesh"};
+  app.require_subcommand(1);
+  bool quiet = false;
+  app.add_flag("-q,--quiet", quiet, "Suppress progress lines on stderr");
+  app.parse_complete_callback([&] { conformesh::apps::setQuiet(quiet); });
+
+  conformesh::apps::registerInfoCommand(app);
+  conformesh::apps::registerGenerateCommand(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const conformesh::InputError& e) {
+    std::cerr << "conformesh: error: " << e.what() << '\n';
+    return conformesh::apps::kExitFailure;
+  } catch (const conformesh::ConvergenceError& e) {
+    std::cerr << "conformesh: did not converge: " << e.what() << '\n';
+    return conformesh::apps::kExitFailure;
+  } catch (const std::exception& e) {
+    std::cerr << "conformesh: internal error: " << e.what() << '\n';
+    return conformesh::apps::kExitFailure;
+  }
+  return 0;
+}

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# bootstrap.sh — the two README commands: install what is missing (Debian 12 packages, as root), build in Release,
+# then either run the main job on the built-in default surface (`run`) or the whole test suite through CTest (`test`).
+#
+#   bash scripts/bootstrap.sh run    # set up, build, remesh the default surface
+#   bash scripts/bootstrap.sh test   # set up, build, run every test
+#
+# Environment: BUILD_DIR (default build), JOBS (default: number of cores).
+set -euo pipefail
+
+mode=${1:-run}
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${BUILD_DIR:-$here/build}
+jobs=${JOBS:-$(nproc)}
+
+# Debian 12 packages: compilers and CMake; the design card's libraries; CLI11 and nlohmann-json for the CLI;
+# SuiteSparse (CHOLMOD) for the Ricci-flow Newton solver; matplotlib for plots; libcgal-demo for CGAL's data set of
+# real meshes that the tests read (made by others, so topology checks are not self-fulfilling).
+packages=(build-essential cmake libeigen3-dev libceres-dev libboost-graph-dev libgeographiclib-dev catch2
+          libcli11-dev nlohmann-json3-dev libsuitesparse-dev python3-matplotlib libcgal-demo)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "bootstrap: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release
+cmake --build "$build" -j "$jobs"
+
+case "$mode" in
+  run)
+    out="$here/out"
+    mkdir -p "$out"
+    "$build/apps/conformesh" generate icosphere --level 4 -o "$out/icosphere.ply"
+    "$build/apps/conformesh" info "$out/icosphere.ply"
+    ;;
+  test)
+    cd "$build"
+    ctest --output-on-failure -j "$jobs"
+    ;;
+  *)
+    echo "usage: bash scripts/bootstrap.sh run|test" >&2
+    exit 2
+    ;;
+esac
