@@ -1,0 +1,119 @@
+// End-to-end tests of `conformesh discretize`: --list, a family with parameters written to PLY and read back (chart
+// coordinates u, v per vertex, edge lengths, the metric named in the comments), a sampled field, and one-line errors
+// naming the family, the parameter or the field file's line.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "conformesh/intrinsic/mesh_io.h"
+#include "conformesh/intrinsic/metric_families.h"
+#include "conformesh/intrinsic/sampled_metric.h"
+
+namespace fs = std::filesystem;
+using namespace conformesh::intrinsic;
+
+namespace {
+
+struct Run {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path dir() {
+  const fs::path d = fs::temp_directory_path() / "conformesh_discretize_test";
+  fs::create_directories(d);
+  return d;
+}
+
+Run runCli(const std::string& args) {
+  const std::string cmd = "timeout 60 " + std::string(CONFORMESH_CLI) + " " + args + " >" + (dir() / "out").string() +
+                          " 2>" + (dir() / "err").string();
+  const int raw = std::system(cmd.c_str());
+  Run r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -WTERMSIG(raw);
+  r.out = slurp(dir() / "out");
+  r.err = slurp(dir() / "err");
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("discretize --list describes every family and its parameters") {
+  const Run r = runCli("discretize --list --json");
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j.size() == metricFamilies().size());
+  bool kerr = false;
+  for (const auto& f : j)
+    if (f["name"] == "kerr-newman") kerr = f["parameters"].size() == 3;
+  CHECK(kerr);
+}
+
+TEST_CASE("discretize a family: PLY with lengths, u, v and the metric named") {
+  const fs::path out = dir() / "kerr.ply";
+  const Run r = runCli("-q discretize kerr-newman --param a=2 --param M=2 -r 6 -o " + out.string() + " --json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["euler_characteristic"] == 2);
+  CHECK(std::abs(j["gauss_bonnet_residual"].get<double>()) < 1e-10);
+  // Extremal Kerr, M = 2: area 8πM r₊ = 8π·2·2.
+  CHECK(j["smooth_area"].get<double>() == Approx(32 * M_PI).epsilon(1e-9));
+  const MeshData d = readMesh(out.string());
+  CHECK(d.nVertices == 362);
+  CHECK(d.vertexProperties.at("u").size() == 362);
+  CHECK(d.vertexProperties.at("v").size() == 362);
+  CHECK(d.edges.size() == 1080);
+  bool named = false;
+  for (const std::string& c : d.comments) named = named || c.find("kerr-newman M=2 a=2 Q=0") != std::string::npos;
+  CHECK(named);
+}
+
+TEST_CASE("discretize --field: a sampled metric file") {
+  const fs::path field = dir() / "torus_field.txt";
+  std::ofstream(field) << formatSampledField(sampleMetric(TorusMetric(3, 1), 24, 16));
+  const fs::path out = dir() / "torus.ply";
+  const Run r = runCli("-q discretize --field " + field.string() + " -r 6 -o " + out.string() + " --json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["euler_characteristic"] == 0);
+  CHECK(j["smooth_area"].get<double>() == Approx(12 * M_PI * M_PI).epsilon(1e-4));
+}
+
+TEST_CASE("discretize errors: one line naming the family, parameter or file line") {
+  Run r = runCli("discretize klein -o " + (dir() / "x.ply").string());
+  CHECK(r.status == 1);
+  CHECK(r.err.find("unknown metric family 'klein'") != std::string::npos);
+  r = runCli("discretize torus --param R=1 --param r=2 -o " + (dir() / "x.ply").string());
+  CHECK(r.status == 1);
+  CHECK(r.err.find("R must exceed") != std::string::npos);
+  r = runCli("discretize sphere --param R=abc -o " + (dir() / "x.ply").string());
+  CHECK(r.status == 1);
+  CHECK(r.err.find("'abc' is not a number") != std::string::npos);
+  const fs::path bad = dir() / "bad_field.txt";
+  std::ofstream(bad) << "conformesh-metric-field 1\nchart 0 1 0 1\ngrid 4 4\nperiodic_u no\nperiodic_v no\n"
+                        "fields g_uu g_uv g_vv\ndata\n1 0 1\n1 5 1\n";
+  r = runCli("discretize --field " + bad.string() + " -o " + (dir() / "x.ply").string());
+  CHECK(r.status == 1);
+  CHECK(r.err.find("bad_field.txt:") != std::string::npos);
+  CHECK(r.err.find("wrong grid shape") != std::string::npos);
+  r = runCli("discretize sphere");
+  CHECK(r.status == 1);
+  CHECK(r.err.find("--output") != std::string::npos);
+}
