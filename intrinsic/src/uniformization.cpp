@@ -1,0 +1,586 @@
+// uniformization.cpp — T0 → T0*: the discrete Ricci flow set up for each topology (sphere by puncture and stereographic
+// projection, flat torus, hyperbolic, circle domains), the conformal factor and the correspondence. See
+// uniformization.h and docs/ricci_flow.md.
+#include "conformesh/intrinsic/uniformization.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <queue>
+#include <sstream>
+
+#include <Eigen/Geometry>
+
+#include "conformesh/intrinsic/discrete_conformal.h"
+#include "conformesh/intrinsic/errors.h"
+
+namespace conformesh::intrinsic {
+
+std::string toString(UniformizationTarget target) {
+  switch (target) {
+    case UniformizationTarget::Sphere:
+      return "sphere";
+    case UniformizationTarget::FlatTorus:
+      return "flat-torus";
+    case UniformizationTarget::Hyperbolic:
+      return "hyperbolic";
+    case UniformizationTarget::CircleDomain:
+      return "circle-domain";
+    case UniformizationTarget::HyperbolicGeodesicBoundary:
+      return "hyperbolic-geodesic-boundary";
+  }
+  return "unknown";
+}
+
+namespace {
+
+// === helpers shared by the targets
+
+IntrinsicTriangulation referencePenner(const IntrinsicTriangulation& input) {
+  IntrinsicTriangulation ref;
+  ref.mesh = input.mesh;
+  ref.background = Background::Euclidean;
+  ref.edgeLengths.resize(input.edgeLengths.size());
+  for (std::size_t e = 0; e < input.edgeLengths.size(); ++e)
+    ref.edgeLengths[e] = pennerFromLength(input.background, input.edgeLengths[e]);
+  return ref;
+}
+
+RicciFlowOptions withProgress(const UniformizationOptions& options, const std::string& stage) {
+  RicciFlowOptions flow = options.flow;
+  if (options.progress) {
+    auto user = options.flow.onStep;
+    auto progress = options.progress;
+    flow.onStep = [user, progress, stage](const NewtonStepInfo& info) {
+      std::ostringstream line;
+      line.precision(3);
+      line << stage << ": Newton step " << info.step << ", max |K - K^| = " << info.maxResidual << " rad, step length "
+           << info.stepLength << ", flips " << info.flips;
+      progress(line.str());
+      if (user) user(info);
+    };
+  }
+  return flow;
+}
+
+void accumulate(UniformizationReport& report, const RicciFlowReport& flow) {
+  report.newtonSteps += flow.newtonSteps;
+  report.flips += flow.flips;
+  report.maxResidual = flow.maxResidual;
+  report.effectiveTolerance = flow.effectiveTolerance;
+}
+
+// Vertex scaling multiplies lengths by e^{(w_i+w_j)/2}, i.e. by e^{w} where w is constant: the uniform metric is
+// e^{2w} × the original, so the original is e^{2λ} × the uniform one with λ = −w.
+std::vector<double> lambdaFromScale(const std::vector<double>& w) {
+  std::vector<double> lambda(w.size());
+  for (std::size_t i = 0; i < w.size(); ++i) lambda[i] = -w[i];
+  return lambda;
+}
+
+// === circle domains (genus 0 with boundary)
+
+Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                      UniformizationReport report) {
+  report.target = UniformizationTarget::CircleDomain;
+  DiscreteConformalMetric metric(referencePenner(input), Background::Euclidean);
+  const HalfedgeMesh& m = metric.mesh();  // boundary edges are never flipped, so loops keep their halfedge edges
+  FlowCorrespondence log(m.nFaces());
+  // Boundary loops as edge lists (halfedge indices move with flips; edge indices and their endpoints on the boundary
+  // do not). The longest loop (in the input metric) becomes the outer circle.
+  const std::vector<std::vector<int>> loopsH = input.mesh.boundaryLoops();
+  std::vector<std::vector<int>> loopEdges(loopsH.size()), loopTips(loopsH.size());
+  int outer = 0;
+  double longest = -1;
+  for (std::size_t i = 0; i < loopsH.size(); ++i) {
+    double total = 0;
+    for (int h : loopsH[i]) {
+      loopEdges[i].push_back(input.mesh.edge(h));
+      loopTips[i].push_back(input.mesh.tip(h));
+      total += input.length(h);
+    }
+    if (total > longest) {
+      longest = total;
+      outer = static_cast<int>(i);
+    }
+  }
+  ConformalTarget target;
+  target.angleSum.assign(m.nVertices(), 2 * M_PI);
+  for (std::size_t i = 0; i < loopEdges.size(); ++i) {
+    ConformalTarget::CircleLoop loop;
+    loop.edges = loopEdges[i];
+    loop.vertices = loopTips[i];
+    loop.sign = static_cast<int>(i) == outer ? 1.0 : -1.0;
+    target.circleLoops.push_back(std::move(loop));
+  }
+  const RicciFlowReport flow = solveConformalFlow(metric, target, withProgress(options, "circle domain"), &log);
+  accumulate(report, flow);
+  std::vector<double> radius = flow.circleRadii;
+  // Scale so that the outer circle is the unit circle: lengths scale by e^{Δu}.
+  const double shift = -std::log(radius[outer]);
+  for (double& x : metric.u()) x += shift;
+
+  Uniformization out;
+  out.uniform = metric.triangulation();
+  out.lambda = lambdaFromScale(metric.u());
+  log.logScale = metric.u();
+  out.correspondence = std::move(log);
+  const std::vector<Eigen::Vector2d> planar = layoutFlat(out.uniform);
+  // Centre the outer circle at the origin: circumcentre of three well-spread outer vertices.
+  const std::vector<int>& tips = loopTips[outer];
+  const int n = static_cast<int>(tips.size());
+  const Eigen::Vector2d A = planar[tips[0]], B = planar[tips[n / 3]], C = planar[tips[(2 * n) / 3]];
+  const double d = 2 * (A.x() * (B.y() - C.y()) + B.x() * (C.y() - A.y()) + C.x() * (A.y() - B.y()));
+  const Eigen::Vector2d centre(
+      (A.squaredNorm() * (B.y() - C.y()) + B.squaredNorm() * (C.y() - A.y()) + C.squaredNorm() * (A.y() - B.y())) / d,
+      (A.squaredNorm() * (C.x() - B.x()) + B.squaredNorm() * (A.x() - C.x()) + C.squaredNorm() * (B.x() - A.x())) / d);
+  out.positions.resize(planar.size());
+  for (std::size_t v = 0; v < planar.size(); ++v)
+    out.positions[v] = Eigen::Vector3d(planar[v].x() - centre.x(), planar[v].y() - centre.y(), 0.0);
+  out.report = report;
+  return out;
+}
+
+// === flat tori and hyperbolic surfaces (no boundary condition beyond the cone angles)
+
+Uniformization uniformizeConstant(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                  UniformizationReport report, Background geometry) {
+  DiscreteConformalMetric metric(referencePenner(input), geometry);
+  const HalfedgeMesh& m = metric.mesh();
+  FlowCorrespondence log(m.nFaces());
+  ConformalTarget target;
+  target.angleSum.resize(m.nVertices());
+  for (int v = 0; v < m.nVertices(); ++v) target.angleSum[v] = m.isBoundaryVertex(v) ? M_PI : 2 * M_PI;
+  if (geometry == Background::Hyperbolic) {
+    // Start at the scale whose small-triangle area matches the target area −2πχ (Gauss–Bonnet), so Newton starts in
+    // its quadratic basin for fine meshes instead of walking there.
+    double euclideanArea = 0;
+    IntrinsicTriangulation flat = referencePenner(input);
+    for (int f = 0; f < m.nFaces(); ++f) euclideanArea += faceArea(flat, f);
+    const double u0 = 0.5 * std::log(-2 * M_PI * m.eulerCharacteristic() / euclideanArea);
+    std::fill(metric.u().begin(), metric.u().end(), u0);
+  }
+  accumulate(report,
+             solveConformalFlow(metric, target,
+                                withProgress(options, geometry == Background::Hyperbolic ? "hyperbolic" : "flat torus"),
+                                &log));
+  if (geometry == Background::Euclidean) {
+    // Normalize the total area to 1: areas scale by e^{2Δu}.
+    const IntrinsicTriangulation current = metric.triangulation();
+    const double shift = -0.5 * std::log(totalArea(current));
+    for (double& x : metric.u()) x += shift;
+  }
+  Uniformization out;
+  out.uniform = metric.triangulation();
+  out.lambda = lambdaFromScale(metric.u());
+  log.logScale = metric.u();
+  out.correspondence = std::move(log);
+  out.report = report;
+  return out;
+}
+
+// === the sphere (closed genus 0)
+
+// Vertices usable as the puncture: a simple star (distinct link vertices, none equal to the vertex), sorted so that the
+// roundest links (smallest max/min ratio of the spoke lengths, i.e. the most uniform Dirichlet data) come first.
+std::vector<int> punctureCandidates(const IntrinsicTriangulation& tri) {
+  const HalfedgeMesh& m = tri.mesh;
+  std::vector<std::pair<double, int>> scored;
+  std::vector<int> seen(m.nVertices(), -1);
+  for (int v = 0; v < m.nVertices(); ++v) {
+    bool simple = true;
+    double lo = std::numeric_limits<double>::infinity(), hi = 0;
+    const int h0 = m.vertexHalfedge(v);
+    int h = h0;
+    do {
+      const int a = m.tip(h);
+      if (a == v || seen[a] == v) simple = false;
+      seen[a] = v;
+      lo = std::min(lo, tri.length(h));
+      hi = std::max(hi, tri.length(h));
+      h = m.nextOutgoing(h);
+    } while (h != h0 && h != kInvalid);
+    if (simple && m.vertexDegree(v) >= 3) scored.emplace_back(hi / lo, v);
+  }
+  std::sort(scored.begin(), scored.end());
+  std::vector<int> out;
+  for (const auto& s : scored) out.push_back(s.second);
+  return out;
+}
+
+// Dijkstra distances from `source` along edges (initial guess of the conformal factor only).
+std::vector<double> edgeDistances(const IntrinsicTriangulation& tri, int source) {
+  const HalfedgeMesh& m = tri.mesh;
+  std::vector<double> dist(m.nVertices(), std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+  dist[source] = 0;
+  queue.emplace(0.0, source);
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > dist[v]) continue;
+    const int h0 = m.vertexHalfedge(v);
+    int h = h0;
+    do {
+      const int a = m.tip(h);
+      if (d + tri.length(h) < dist[a]) {
+        dist[a] = d + tri.length(h);
+        queue.emplace(dist[a], a);
+      }
+      h = m.nextOutgoing(h);
+    } while (h != h0 && h != kInvalid);
+  }
+  return dist;
+}
+
+// Spherical geodesic length of the chord between two unit vectors, accurate for short chords.
+double sphericalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return 2 * std::asin(std::min(1.0, 0.5 * (a - b).norm()));
+}
+
+struct SphereAttempt {
+  bool ok = false;
+  std::string why;
+};
+
+SphereAttempt trySphere(const IntrinsicTriangulation& input, const UniformizationOptions& options, int inf,
+                        Uniformization& out, UniformizationReport& report) {
+  DiscreteConformalMetric metric(referencePenner(input), Background::Euclidean);
+  const HalfedgeMesh& m = metric.mesh();
+  FlowCorrespondence log(m.nFaces());
+  const int nV = m.nVertices();
+
+  // Star of ∞ frozen; link vertices Dirichlet: u_a = −2 log c_a∞ (then e^{u_a/2} c_a∞ = 1 for all a: the limit of
+  // vertex scaling that sends ∞ to infinity, where all spokes become equally long). ∞ itself is in no active face.
+  ConformalTarget target;
+  target.angleSum.assign(nV, 2 * M_PI);
+  target.fixed.assign(nV, 0);
+  target.fixed[inf] = 1;
+  std::vector<char> frozen(m.nFaces(), 0);
+  std::vector<int> link;
+  // Recomputes the star of ∞ after flips; returns false when the link is not simple (a vertex twice).
+  auto updateStar = [&]() {
+    std::fill(frozen.begin(), frozen.end(), 0);
+    std::fill(target.fixed.begin(), target.fixed.end(), 0);
+    target.fixed[inf] = 1;
+    link.clear();
+    const int h0 = m.vertexHalfedge(inf);
+    int h = h0;
+    do {
+      frozen[HalfedgeMesh::face(h)] = 1;
+      const int a = m.tip(h);
+      if (a == inf || target.fixed[a]) return false;
+      link.push_back(a);
+      target.fixed[a] = 1;
+      metric.u()[a] = -2 * std::log(metric.referencePenner(m.edge(h)));
+      h = m.nextOutgoing(h);
+    } while (h != h0);
+    metric.setFrozenFaces(frozen);
+    return true;
+  };
+  const std::vector<double> dist = edgeDistances(referencePenner(input), inf);
+  for (int v = 0; v < nV; ++v) metric.u()[v] = v == inf ? 0.0 : -2 * std::log(dist[v]);
+  if (!updateStar()) return {false, "the star of the puncture is not simple"};
+  std::vector<double> spoke;
+
+  // Solve the Dirichlet problem, then repair the star: a disk face that degenerated against a link edge ab (its
+  // angle at i reached π) means ab must flip to i∞, i joining the link — Ptolemy gives e^{u_i/2} c_i∞ =
+  // (ℓ_ai + ℓ_bi)/ℓ_ab, i.e. exactly the Dirichlet value at the moment of degeneration; a link vertex a with disk angle
+  // sum Θ_a > π (reflex link polygon, so the stereographic image would fold) leaves the link by flipping its spoke a∞
+  // to the link edge bc. Both are exact Penner flips; repeat until the star is stable.
+  RicciFlowOptions flow = withProgress(options, "sphere (punctured plane)");
+  flow.allowDegenerateFaces = true;
+  for (int round = 0;; ++round) {
+    accumulate(report, solveConformalFlow(metric, target, flow, &log));
+    // All repairs of one kind are batched per round (each flip only touches its own quad; the faces it creates
+    // around ∞ are marked frozen at once so that later candidates see the current star).
+    bool changed = false;
+    for (int f = 0; f < m.nFaces(); ++f) {
+      if (frozen[f]) continue;
+      double L[3];
+      for (int k = 0; k < 3; ++k) L[k] = metric.length(m.edge(3 * f + k));
+      if (isValidTriangle(Background::Euclidean, L[0], L[1], L[2])) continue;
+      const int k = L[0] >= L[1] ? (L[0] >= L[2] ? 0 : 2) : (L[1] >= L[2] ? 1 : 2);
+      const int h = 3 * f + k, t = m.twin(h);
+      const int i = m.tail(HalfedgeMesh::prev(h));
+      if (t == kInvalid || !frozen[HalfedgeMesh::face(t)] || target.fixed[i]) continue;
+      const int g = HalfedgeMesh::face(t);
+      if (metric.flipPtolemy(m.edge(h), &log)) {
+        changed = true;
+        frozen[f] = frozen[g] = 1;  // both new faces contain ∞
+        target.fixed[i] = 1;        // i is on the link now (its Dirichlet value is set by updateStar)
+      }
+    }
+    if (!changed) {
+      // Reflex link vertices, no two consecutive on the link (their spokes share a face), keeping the link ≥ 3.
+      const std::vector<double> sums = flowAngleSums(metric);
+      const std::size_t degree = link.size();
+      std::vector<int> chosen;
+      for (std::size_t s = 0; s < degree; ++s) {
+        const bool prevChosen = !chosen.empty() && chosen.back() == link[(s + degree - 1) % degree];
+        const bool wrapsToFirst = s + 1 == degree && !chosen.empty() && chosen.front() == link[0];
+        if (sums[link[s]] > M_PI + 1e-9 && !prevChosen && !wrapsToFirst && degree - chosen.size() > 3)
+          chosen.push_back(link[s]);
+      }
+      for (int a : chosen) {
+        int h = m.vertexHalfedge(inf);
+        while (m.tip(h) != a) h = m.nextOutgoing(h);
+        if (metric.flipPtolemy(m.edge(h), &log)) changed = true;
+      }
+    }
+    if (!changed) break;
+    if (round > 10 * nV) return {false, "the star of the puncture did not stabilize"};
+    if (!updateStar()) return {false, "a star flip made the link of the puncture non-simple"};
+  }
+  for (int f = 0; f < m.nFaces(); ++f)
+    if (!frozen[f]) {
+      double L[3];
+      for (int k = 0; k < 3; ++k) L[k] = metric.length(m.edge(3 * f + k));
+      if (!isValidTriangle(Background::Euclidean, L[0], L[1], L[2]))
+        return {false, "face " + std::to_string(f) + " stays degenerate next to the puncture's star"};
+    }
+  {
+    int h = m.vertexHalfedge(inf);
+    for (std::size_t s = 0; s < link.size(); ++s, h = m.nextOutgoing(h))
+      spoke.push_back(metric.referencePenner(m.edge(h)));
+  }
+
+  // Lay out the plane, translate to the centroid and scale so the median |z| is 1 (a Möbius map of the sphere fixing
+  // ∞, absorbed in the scale bookkeeping: lengths × ρ ⇔ u + log ρ, since ℓ = e^{(u_i+u_j)/2} c).
+  IntrinsicTriangulation planarTri = metric.triangulation();
+  std::vector<Eigen::Vector2d> z;
+  try {
+    z = layoutFlat(planarTri, 1e-6, frozen);
+  } catch (const ConvergenceError& e) {
+    return {false, e.what()};
+  }
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  for (int v = 0; v < nV; ++v)
+    if (v != inf) centroid += z[v];
+  centroid /= (nV - 1);
+  std::vector<double> radii;
+  for (int v = 0; v < nV; ++v)
+    if (v != inf) radii.push_back((z[v] - centroid).norm());
+  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+  const double rho = 1.0 / std::max(radii[radii.size() / 2], 1e-300);
+  std::vector<double> w(nV);
+  std::vector<Eigen::Vector3d> x(nV);
+  for (int v = 0; v < nV; ++v) {
+    if (v == inf) continue;
+    const Eigen::Vector2d p = rho * (z[v] - centroid);
+    const double r2 = p.squaredNorm();
+    // The y-reflection makes the map orientation preserving for the outward normal (stereographic projection from
+    // the north pole reverses it); reflections do not change the conformal factor.
+    x[v] = Eigen::Vector3d(2 * p.x(), -2 * p.y(), r2 - 1) / (r2 + 1);
+    // Inverse stereographic projection scales chords by e^{(s_a+s_b)/2}, e^{s} = 2/(1+|p|²).
+    w[v] = metric.u()[v] + std::log(rho) + std::log(2 / (1 + r2));
+  }
+  x[inf] = Eigen::Vector3d(0, 0, 1);
+  {
+    double sum = 0;
+    for (std::size_t i = 0; i < link.size(); ++i)
+      sum += 2 * std::log((x[inf] - x[link[i]]).norm() / spoke[i]) - w[link[i]];
+    w[inf] = sum / link.size();
+  }
+
+  // Möbius centring: move the centroid c of the input's area measure (vertex weights: a third of the input area of
+  // each incident face, fixed — the sphere's own area measure would have centroid ≈ 0 for every configuration) to
+  // the origin with the ball automorphism φ_c(x) = (1−|c|²)(x−c)/|x−c|² − c, whose conformal factor on the sphere is
+  // |φ_c'(x)| = (1−|c|²)/|x−c|²; chords scale by sqrt(|φ'(x)||φ'(y)|), so w gains log |φ'|. For a near-uniform
+  // measure φ_c moves the centroid by −(4/3)c to first order, so the step uses (3/4)c (capped at 0.5).
+  std::vector<double> weight(nV, 0.0);
+  {
+    const IntrinsicTriangulation flat = referencePenner(input);
+    for (int f = 0; f < input.mesh.nFaces(); ++f)
+      for (int k = 0; k < 3; ++k) weight[input.mesh.faceVertex(f, k)] += faceArea(flat, f) / 3;
+  }
+  for (int it = 0; it < 100; ++it) {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    double total = 0;
+    for (int v = 0; v < nV; ++v) {
+      c += weight[v] * x[v];
+      total += weight[v];
+    }
+    c /= total;
+    if (c.norm() <= options.centringTolerance) break;
+    c *= 0.75;
+    if (c.norm() > 0.5) c *= 0.5 / c.norm();
+    const double k = 1 - c.squaredNorm();
+    for (int v = 0; v < nV; ++v) {
+      const double d2 = (x[v] - c).squaredNorm();
+      w[v] += std::log(k / d2);
+      x[v] = (k * (x[v] - c) / d2 - c).normalized();
+    }
+    report.centringIterations = it + 1;
+  }
+
+  // The spherical triangulation: geodesic triangles on the points. It is embedded (hence has angle sums 2π) iff every
+  // face is positively oriented and valid; a non-convex flattened link shows up here.
+  IntrinsicTriangulation sphere;
+  sphere.mesh = m;
+  sphere.background = Background::Spherical;
+  sphere.edgeLengths.resize(m.nEdges());
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e);
+    sphere.edgeLengths[e] = sphericalDistance(x[m.tail(h)], x[m.tip(h)]);
+  }
+  for (int f = 0; f < m.nFaces(); ++f) {
+    const Eigen::Vector3d &a = x[m.faceVertex(f, 0)], &b = x[m.faceVertex(f, 1)], &c = x[m.faceVertex(f, 2)];
+    // Differences first: tiny faces (conformal factors of e^-20 occur on thin appendages) keep their sign.
+    if (!((b - a).cross(c - a).dot(a + b + c) > 0) ||
+        !isValidTriangle(Background::Spherical, sphere.length(3 * f), sphere.length(3 * f + 1),
+                         sphere.length(3 * f + 2))) {
+      std::ostringstream msg;
+      msg.precision(3);
+      msg << "face " << f << " is not positively oriented on the sphere (side lengths " << sphere.length(3 * f) << ", "
+          << sphere.length(3 * f + 1) << ", " << sphere.length(3 * f + 2) << ")";
+      return {false, msg.str()};
+    }
+  }
+  const std::vector<double> sums = [&] {
+    std::vector<double> s(nV, 0.0);
+    for (int h = 0; h < m.nHalfedges(); ++h) s[m.tail(h)] += cornerAngle(sphere, h);
+    return s;
+  }();
+  for (int v = 0; v < nV; ++v)
+    if (std::abs(sums[v] - 2 * M_PI) > 1e-8)
+      return {false, "vertex " + std::to_string(v) + " has spherical angle sum " + std::to_string(sums[v])};
+
+  out.uniform = std::move(sphere);
+  out.positions = x;
+  out.lambda = lambdaFromScale(w);
+  log.logScale = w;
+  out.correspondence = std::move(log);
+  return {true, ""};
+}
+
+Uniformization uniformizeSphere(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                UniformizationReport report) {
+  report.target = UniformizationTarget::Sphere;
+  const std::vector<int> candidates = punctureCandidates(input);
+  if (candidates.empty())
+    throw InputError(
+        "genus-0 uniformization needs a vertex with a simple star (distinct neighbours) to puncture; "
+        "this triangulation has none");
+  std::string reasons;
+  for (int attempt = 0; attempt < std::min<int>(options.maxPunctureAttempts, candidates.size()); ++attempt) {
+    Uniformization out;
+    UniformizationReport r = report;
+    r.punctureVertex = candidates[attempt];
+    r.punctureAttempts = attempt + 1;
+    if (options.progress) options.progress("sphere: puncturing vertex " + std::to_string(candidates[attempt]));
+    const SphereAttempt result = trySphere(input, options, candidates[attempt], out, r);
+    if (result.ok) {
+      out.report = r;
+      return out;
+    }
+    reasons += (reasons.empty() ? "" : "; ") + ("vertex " + std::to_string(candidates[attempt]) + ": " + result.why);
+    report.newtonSteps = r.newtonSteps;
+    report.flips = r.flips;
+  }
+  throw ConvergenceError("genus-0 uniformization failed for every puncture tried (" + reasons + ")");
+}
+
+}  // namespace
+
+// === layout
+
+std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, double mismatch,
+                                        const std::vector<char>& skipFaces) {
+  if (tri.background != Background::Euclidean)
+    throw InputError("layoutFlat: the triangulation is " + toString(tri.background) +
+                     ", a flat layout needs Euclidean");
+  const HalfedgeMesh& m = tri.mesh;
+  auto skip = [&](int f) { return !skipFaces.empty() && skipFaces[f]; };
+  std::vector<Eigen::Vector2d> p(m.nVertices(), Eigen::Vector2d::Zero());
+  std::vector<char> placed(m.nVertices(), 0), done(m.nFaces(), 0);
+  double meanLength = 0;
+  for (double l : tri.edgeLengths) meanLength += l;
+  meanLength /= std::max<std::size_t>(1, tri.edgeLengths.size());
+  auto place = [&](int v, const Eigen::Vector2d& q) {
+    if (placed[v]) {
+      if ((p[v] - q).norm() > mismatch * meanLength) {
+        std::ostringstream msg;
+        msg.precision(3);
+        msg << "layoutFlat: vertex " << v << " is reached at two places " << (p[v] - q).norm()
+            << " apart; the metric is not flat or not simply developable";
+        throw ConvergenceError(msg.str());
+      }
+      return;
+    }
+    p[v] = q;
+    placed[v] = 1;
+  };
+  std::vector<int> queue;
+  for (int seed = 0; seed < m.nFaces(); ++seed) {
+    if (done[seed] || skip(seed)) continue;
+    // Place the seed face with its first edge on the x-axis.
+    const int h = 3 * seed;
+    const int a = m.tail(h), b = m.tip(h), c = m.tail(HalfedgeMesh::prev(h));
+    if (!placed[a] && !placed[b]) {
+      place(a, Eigen::Vector2d(0, 0));
+      place(b, Eigen::Vector2d(tri.length(h), 0));
+    }
+    const double theta = cornerAngle(tri, h);
+    const Eigen::Vector2d dir = (p[b] - p[a]).normalized();
+    place(c, p[a] + tri.length(HalfedgeMesh::prev(h)) *
+                        Eigen::Vector2d(std::cos(theta) * dir.x() - std::sin(theta) * dir.y(),
+                                        std::sin(theta) * dir.x() + std::cos(theta) * dir.y()));
+    done[seed] = 1;
+    queue.assign(1, seed);
+    for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+      const int f = queue[qi];
+      for (int k = 0; k < 3; ++k) {
+        const int t = m.twin(3 * f + k);
+        if (t == kInvalid) continue;
+        const int g = HalfedgeMesh::face(t);
+        if (done[g] || skip(g)) continue;
+        // In g, t runs from a to b (both placed: they are f's vertices); the third vertex lies to the left of a→b.
+        const int ga = m.tail(t), gb = m.tip(t), gc = m.tail(HalfedgeMesh::prev(t));
+        const double th = cornerAngle(tri, t);
+        const Eigen::Vector2d d = (p[gb] - p[ga]).normalized();
+        place(gc,
+              p[ga] + tri.length(HalfedgeMesh::prev(t)) * Eigen::Vector2d(std::cos(th) * d.x() - std::sin(th) * d.y(),
+                                                                          std::sin(th) * d.x() + std::cos(th) * d.y()));
+        done[g] = 1;
+        queue.push_back(g);
+      }
+    }
+  }
+  return p;
+}
+
+// === entry point
+
+Uniformization uniformize(const IntrinsicTriangulation& input, const UniformizationOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  validateLengths(input, "uniformize");
+  const std::vector<ComponentTopology> components = input.mesh.components();
+  if (components.size() != 1)
+    throw InputError("uniformize: the surface has " + std::to_string(components.size()) +
+                     " connected components; uniformize each separately");
+  UniformizationReport report;
+  report.genus = components[0].genus;
+  report.boundaryLoops = components[0].boundaryLoops;
+  Uniformization out;
+  if (report.boundaryLoops == 0 && report.genus == 0) {
+    out = uniformizeSphere(input, options, report);
+  } else if (report.boundaryLoops == 0 && report.genus == 1) {
+    report.target = UniformizationTarget::FlatTorus;
+    out = uniformizeConstant(input, options, report, Background::Euclidean);
+  } else if (report.boundaryLoops == 0) {
+    report.target = UniformizationTarget::Hyperbolic;
+    out = uniformizeConstant(input, options, report, Background::Hyperbolic);
+  } else if (report.genus == 0) {
+    out = uniformizeCircleDomain(input, options, report);
+  } else {
+    report.target = UniformizationTarget::HyperbolicGeodesicBoundary;
+    out = uniformizeConstant(input, options, report, Background::Hyperbolic);
+  }
+  out.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace conformesh::intrinsic
