@@ -1,0 +1,173 @@
+// background_model.cpp — the plane, sphere and hyperboloid models of background_model.h: distances, tangents,
+// exponential maps, circumcentres and projective barycentric coordinates.
+#include "conformesh/refine/background_model.h"
+
+#include <cmath>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+namespace conformesh::refine {
+
+using intrinsic::Background;
+
+double BackgroundModel::inner(const Vec3& a, const Vec3& b) const {
+  switch (g_) {
+    case Background::Euclidean:
+      return a.x() * b.x() + a.y() * b.y();
+    case Background::Spherical:
+      return a.dot(b);
+    case Background::Hyperbolic:
+      return a.x() * b.x() + a.y() * b.y() - a.z() * b.z();
+  }
+  return 0;
+}
+
+double BackgroundModel::norm(const Vec3& t) const {
+  return std::sqrt(std::max(0.0, inner(t, t)));
+}
+
+double BackgroundModel::distance(const Vec3& p, const Vec3& q) const {
+  const Vec3 w = q - p;
+  switch (g_) {
+    case Background::Euclidean:
+      return std::hypot(w.x(), w.y());
+    case Background::Spherical:
+      return 2 * std::asin(std::min(1.0, w.norm() / 2));
+    case Background::Hyperbolic:
+      // ⟨w,w⟩_M = 4 sinh²(d/2) ≥ 0 for two points of the upper sheet.
+      return 2 * std::asinh(norm(w) / 2);
+  }
+  return 0;
+}
+
+Vec3 BackgroundModel::tangentToward(const Vec3& p, const Vec3& q) const {
+  Vec3 w = q - p;
+  switch (g_) {
+    case Background::Euclidean:
+      w.z() = 0;
+      break;
+    case Background::Spherical:
+      w += (w.squaredNorm() / 2) * p;
+      break;
+    case Background::Hyperbolic:
+      w -= (inner(w, w) / 2) * p;
+      break;
+  }
+  return w / norm(w);
+}
+
+Vec3 BackgroundModel::turnLeft(const Vec3& p, const Vec3& t) const {
+  switch (g_) {
+    case Background::Euclidean:
+      return Vec3(-t.y(), t.x(), 0);
+    case Background::Spherical:
+      return p.cross(t);
+    case Background::Hyperbolic: {
+      // The Lorentz cross product J(p × t), J = diag(1, 1, −1): Minkowski-orthogonal to p and t, and equal to e2 for
+      // p = e3, t = e1, so it turns left like the other two models; proper Lorentz maps preserve it.
+      const Vec3 c = p.cross(t);
+      return Vec3(c.x(), c.y(), -c.z());
+    }
+  }
+  return t;
+}
+
+Vec3 BackgroundModel::rotate(const Vec3& p, const Vec3& t, double angle) const {
+  return std::cos(angle) * t + std::sin(angle) * turnLeft(p, t);
+}
+
+Vec3 BackgroundModel::exp(const Vec3& p, const Vec3& t, double r) const {
+  switch (g_) {
+    case Background::Euclidean:
+      return Vec3(p.x() / p.z() + r * t.x(), p.y() / p.z() + r * t.y(), 1.0);
+    case Background::Spherical:
+      return std::cos(r) * p + std::sin(r) * t;
+    case Background::Hyperbolic:
+      return std::cosh(r) * p + std::sinh(r) * t;
+  }
+  return p;
+}
+
+Vec3 BackgroundModel::normalize(const Vec3& v) const {
+  switch (g_) {
+    case Background::Euclidean:
+      return v / v.z();
+    case Background::Spherical:
+      return v / v.norm();
+    case Background::Hyperbolic: {
+      const double s = std::sqrt(std::max(0.0, -inner(v, v)));
+      return (v.z() < 0 ? -v : v) / s;
+    }
+  }
+  return v;
+}
+
+Vec3 BackgroundModel::canonicalTangent(const Vec3& p) const {
+  const Vec3 e1(1, 0, 0);
+  switch (g_) {
+    case Background::Euclidean:
+      return e1;
+    case Background::Spherical: {
+      const Vec3 t = e1 - p.x() * p;
+      return t / t.norm();
+    }
+    case Background::Hyperbolic: {
+      const Vec3 t = e1 + p.x() * p;  // ⟨e1, p⟩_M = p.x, and the projection onto T_p adds ⟨e1,p⟩ p since ⟨p,p⟩ = −1
+      return t / norm(t);
+    }
+  }
+  return e1;
+}
+
+double BackgroundModel::angleOf(const Vec3& p, const Vec3& w) const {
+  const Vec3 t = canonicalTangent(p);
+  return std::atan2(inner(w, turnLeft(p, t)), inner(w, t));
+}
+
+Vec3 BackgroundModel::direction(const Vec3& p, double theta) const {
+  return rotate(p, canonicalTangent(p), theta);
+}
+
+Vec3 BackgroundModel::thirdVertex(const Vec3& P, const Vec3& Q, double angleAtP, double lengthPR) const {
+  return exp(P, rotate(P, tangentToward(P, Q), angleAtP), lengthPR);
+}
+
+std::optional<Vec3> BackgroundModel::circumcenter(const Vec3& a, const Vec3& b, const Vec3& c) const {
+  const Vec3 u = b - a, v = c - a;
+  switch (g_) {
+    case Background::Euclidean: {
+      // Relative to a: the standard formula |u|²(v⊥) − |v|²(u⊥) over 2 u×v.
+      const double d = 2 * (u.x() * v.y() - u.y() * v.x());
+      if (d == 0) return std::nullopt;
+      const double uu = u.x() * u.x() + u.y() * u.y(), vv = v.x() * v.x() + v.y() * v.y();
+      return Vec3(a.x() / a.z() + (v.y() * uu - u.y() * vv) / d, a.y() / a.z() + (u.x() * vv - v.x() * uu) / d, 1.0);
+    }
+    case Background::Spherical: {
+      const Vec3 n = u.cross(v);
+      const double len = n.norm();
+      if (len == 0) return std::nullopt;
+      return n / len;
+    }
+    case Background::Hyperbolic: {
+      const Vec3 c0 = u.cross(v);
+      const Vec3 n(c0.x(), c0.y(), -c0.z());
+      if (!(inner(n, n) < 0)) return std::nullopt;  // spacelike or null: hypercycle or horocycle, no circle
+      return normalize(n);
+    }
+  }
+  return std::nullopt;
+}
+
+Eigen::Vector3d BackgroundModel::barycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) const {
+  Eigen::Matrix3d m;
+  m << a, b, c;
+  Eigen::Vector3d beta = m.partialPivLu().solve(x);
+  return beta / beta.sum();
+}
+
+Vec3 BackgroundModel::fromBarycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Eigen::Vector3d& bary) const {
+  return normalize(bary[0] * a + bary[1] * b + bary[2] * c);
+}
+
+}  // namespace conformesh::refine

@@ -1,0 +1,639 @@
+// delaunay_refinement.cpp — the refinement loop of delaunay_refinement.h: queues of encroached boundary edges and bad
+// triangles, circumcentre location by geodesic tracing, insertion with signposts and input locations, Lawson flips.
+#include "conformesh/refine/delaunay_refinement.h"
+
+#include "corner_angle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <queue>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <Eigen/QR>
+
+#include "conformesh/intrinsic/curvature.h"
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/intrinsic_flips.h"
+#include "conformesh/refine/geodesic_trace.h"
+#include "conformesh/refine/robust_predicates.h"
+
+namespace conformesh::refine {
+
+using detail::fastCornerAngle;
+using intrinsic::Background;
+using intrinsic::HalfedgeMesh;
+using intrinsic::IntrinsicTriangulation;
+using intrinsic::kInvalid;
+
+namespace {
+
+std::string num(double x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << x;
+  return s.str();
+}
+
+// Angle difference reduced to (−π, π].
+double wrapPi(double a) {
+  a = std::remainder(a, 2 * M_PI);
+  return a;
+}
+
+// One boundary loop: whether it is split on its circle, the circle's radius, and on which side of the loop's halfedges
+// (interior on their left) the centre lies: left for an outer loop, right for a hole of a circle domain.
+struct LoopCircle {
+  bool circle = false;
+  double radius = 0;
+  bool centerOnLeft = true;
+};
+
+class Refiner {
+ public:
+  Refiner(const IntrinsicTriangulation& input, const RefineOptions& options)
+      : in_(input), opt_(options), model_(input.background) {}
+
+  RefineResult run();
+
+ private:
+  // === setup
+  void validate();
+  void setupBoundary();
+  // === queues and tests
+  void pushFace(int f);
+  void pushFacesAround(int v);
+  bool segmentEncroached(int e) const;
+  void processSegment(int e);
+  void processFace(int f);
+  // === mutation
+  void flip(int e);
+  void restoreDelaunay(std::vector<int> stack, int center = kInvalid);
+  int delaunaySign(int e) const;
+  void afterInsertion(int p);
+  void splitSegment(int e);
+  void insertAt(const TraceResult& trace, const InputSurface::Arrival& arrival);
+  void insertOnEdge(const TraceResult& trace, int cornerOpposite, const InputSurface::Arrival& arrival);
+  std::vector<int> encroachedByPoint(const TraceResult& trace) const;
+  void countInsertion();
+
+  const IntrinsicTriangulation& in_;
+  RefineOptions opt_;
+  BackgroundModel model_;
+  std::optional<InputSurface> inputStore_;  // built after validation
+  const InputSurface* inputPtr_ = nullptr;
+  RefineResult res_;
+  IntrinsicTriangulation& tri_ = res_.triangulation;
+  Signposts& sp_ = res_.signposts;
+  std::vector<int> edgeLoop_;  // per edge: boundary loop index, −1 for interior edges
+  std::vector<LoopCircle> loops_;
+  std::vector<char> sharpCorner_;  // per vertex: an input boundary vertex whose angle is below 60°
+  bool hasBoundary_ = false, uniform_ = true;
+  double lambdaMax_ = 0, minSize_ = 0;
+  // Bad-triangle candidates, largest relative size R·e^λ first (λ averaged over the corners): refining from the
+  // coarse end, as Triangle does, spreads insertions evenly and gives better-shaped meshes than first-in-first-out
+  // (measured: mean smallest angle 46–48° → see docs/refinement.md). Keys may go stale when flips change a queued face;
+  // they only order the work, processFace re-tests every face.
+  std::priority_queue<std::pair<double, int>> faceQueue_;
+  std::deque<int> segmentQueue_;
+  std::vector<char> faceQueued_;
+  std::int64_t insertions_ = 0;
+};
+
+void Refiner::validate() {
+  intrinsic::validateLengths(in_, "refine input");
+  if (!(opt_.epsilon > 0) || !std::isfinite(opt_.epsilon))
+    throw InputError("refine: the size bound epsilon must be a finite positive number, got " + num(opt_.epsilon));
+  if (!(opt_.ratioBound >= 1) || !std::isfinite(opt_.ratioBound))
+    throw InputError("refine: the shape bound B (circumradius / shortest edge) must be at least 1, got " +
+                     num(opt_.ratioBound) + " (B = 1 is Chew's 30° bound; no triangle can do better than 1/√3)");
+  const int nV = in_.mesh.nVertices();
+  if (!opt_.lambda.empty() && static_cast<int>(opt_.lambda.size()) != nV)
+    throw InputError("refine: the conformal factor has " + std::to_string(opt_.lambda.size()) +
+                     " values, expected one per input vertex (" + std::to_string(nV) + ")");
+  for (int v = 0; v < static_cast<int>(opt_.lambda.size()); ++v)
+    if (!std::isfinite(opt_.lambda[v]))
+      throw InputError("refine: the conformal factor at vertex " + std::to_string(v) + " is not finite (" +
+                       num(opt_.lambda[v]) + ")");
+  if (!(opt_.maxInsertions > 0)) throw InputError("refine: maxInsertions must be positive");
+}
+
+void Refiner::setupBoundary() {
+  const HalfedgeMesh& m = tri_.mesh;
+  edgeLoop_.assign(m.nEdges(), -1);
+  const std::vector<std::vector<int>> loops = m.boundaryLoops();
+  hasBoundary_ = !loops.empty();
+  res_.statistics.boundaryLoops = static_cast<int>(loops.size());
+  if (hasBoundary_ && in_.background != Background::Euclidean && opt_.boundarySplit == BoundarySplit::Circle)
+    throw InputError("refine: boundary circles are supported in the Euclidean background only (input is " +
+                     intrinsic::toString(in_.background) + "); use geodesic boundary splitting");
+  const std::vector<double> sums = intrinsic::angleSums(tri_);
+  // 60° is the smallest boundary angle for which Ruppert's analysis holds; 1e-9 rad keeps an exact 60° corner regular.
+  sharpCorner_.assign(m.nVertices(), 0);
+  for (int v = 0; v < m.nVertices(); ++v) sharpCorner_[v] = m.isBoundaryVertex(v) && sums[v] < M_PI / 3 - 1e-9;
+  for (int li = 0; li < static_cast<int>(loops.size()); ++li) {
+    const std::vector<int>& loop = loops[li];
+    for (int h : loop) edgeLoop_[m.edge(h)] = li;
+    LoopCircle lc;
+    if (in_.background == Background::Euclidean && opt_.boundarySplit != BoundarySplit::Geodesic) {
+      // Lay the loop out by its edge lengths and turning angles π − Σθ (the discrete geodesic curvature), then fit a
+      // circle (Kåsa's algebraic least squares) and measure how far the vertices are from it.
+      const int n = static_cast<int>(loop.size());
+      std::vector<Eigen::Vector2d> pos(n);
+      Eigen::Vector2d p(0, 0);
+      double heading = 0;
+      for (int i = 0; i < n; ++i) {
+        pos[i] = p;
+        const int h = loop[i];
+        p += tri_.length(h) * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+        heading += M_PI - sums[m.tip(h)];
+      }
+      Eigen::MatrixXd A(n, 3);
+      Eigen::VectorXd b(n);
+      for (int i = 0; i < n; ++i) {
+        A(i, 0) = pos[i].x();
+        A(i, 1) = pos[i].y();
+        A(i, 2) = 1;
+        b(i) = -pos[i].squaredNorm();
+      }
+      const Eigen::Vector3d s = A.colPivHouseholderQr().solve(b);
+      const Eigen::Vector2d center(-s(0) / 2, -s(1) / 2);
+      const double radius = std::sqrt(std::max(0.0, center.squaredNorm() - s(2)));
+      double worst = 0;
+      int worstVertex = m.tail(loop[0]);
+      for (int i = 0; i < n; ++i) {
+        const double dev = std::abs((pos[i] - center).norm() - radius);
+        if (dev > worst) {
+          worst = dev;
+          worstVertex = m.tail(loop[i]);
+        }
+      }
+      double area2 = 0;
+      for (int i = 0; i < n; ++i) {
+        const Eigen::Vector2d &u = pos[i], &w = pos[(i + 1) % n];
+        area2 += u.x() * w.y() - u.y() * w.x();
+      }
+      // Every triangle and every rectangle is cocircular; a loop is read as a discretized circle only if it also has
+      // at least 6 vertices and turns by at most 60° at each (so a regular hexagon is the coarsest circle).
+      double maxTurn = 0;
+      for (int h : loop) maxTurn = std::max(maxTurn, std::abs(M_PI - sums[m.tip(h)]));
+      const bool cocircular =
+          n >= 6 && maxTurn <= M_PI / 3 + 1e-9 && std::isfinite(radius) && worst <= opt_.circleTolerance * radius;
+      if (cocircular) {
+        lc.circle = true;
+        lc.radius = radius;
+        lc.centerOnLeft = area2 > 0;
+        ++res_.statistics.circleLoops;
+      } else if (opt_.boundarySplit == BoundarySplit::Circle) {
+        throw InputError("refine: boundary loop " + std::to_string(li) + " (" + std::to_string(n) +
+                         " edges) is not inscribed in a circle: vertex " + std::to_string(worstVertex) + " lies " +
+                         num(worst) + " from the fitted circle of radius " + num(radius) + " (tolerance " +
+                         num(opt_.circleTolerance) + " relative), largest turning angle " + num(maxTurn * 180 / M_PI) +
+                         "° (a discretized circle needs ≥ 6 vertices and turns ≤ 60°)");
+      }
+    }
+    loops_.push_back(lc);
+  }
+}
+
+void Refiner::pushFace(int f) {
+  if (faceQueued_.size() < static_cast<size_t>(tri_.mesh.nFaces())) faceQueued_.resize(tri_.mesh.nFaces(), 0);
+  if (faceQueued_[f]) return;
+  faceQueued_[f] = 1;
+  const HalfedgeMesh& m = tri_.mesh;
+  const double meanLambda =
+      (res_.lambda[m.faceVertex(f, 0)] + res_.lambda[m.faceVertex(f, 1)] + res_.lambda[m.faceVertex(f, 2)]) / 3;
+  const double R = intrinsic::faceCircumradius(tri_, f);
+  faceQueue_.push({std::isfinite(R) ? R * std::exp(meanLambda) : INFINITY, f});
+}
+
+void Refiner::pushFacesAround(int v) {
+  const HalfedgeMesh& m = tri_.mesh;
+  const int start = m.vertexHalfedge(v);
+  int h = start;
+  do {
+    const int f = HalfedgeMesh::face(h);
+    pushFace(f);
+    if (hasBoundary_)
+      for (int k = 0; k < 3; ++k)
+        if (m.twin(3 * f + k) == kInvalid) segmentQueue_.push_back(m.edge(3 * f + k));
+    h = m.nextOutgoing(h);
+  } while (h != kInvalid && h != start);
+}
+
+bool Refiner::segmentEncroached(int e) const {
+  // In a Delaunay triangulation a vertex lies strictly inside the diametral circle of boundary edge e only if the apex
+  // of e's triangle does, i.e. the angle opposite e exceeds 90°. 1e-10 rad keeps a right angle (the apex ON the
+  // circle, not encroaching) from being split because of round-off in the angle.
+  const int h = tri_.mesh.edgeHalfedge(e);
+  return fastCornerAngle(tri_, HalfedgeMesh::prev(h)) > M_PI / 2 + 1e-10;
+}
+
+void Refiner::flip(int e) {
+  const int h = tri_.mesh.edgeHalfedge(e), g = tri_.mesh.twin(h);
+  if (flipWithSignposts(tri_, sp_, e)) {
+    ++res_.statistics.flips;
+    pushFace(HalfedgeMesh::face(h));
+    pushFace(HalfedgeMesh::face(g));
+  }
+}
+
+int Refiner::delaunaySign(int e) const {
+  // A fast filtered test in the Euclidean background, which spares the six half-angle arctangents of delaunayMargin
+  // for the great majority of edges: e is Delaunay iff cot α + cot β ≥ 0, and cot α = (b² + c² − a²) / (4·area) needs
+  // one square root per triangle (Kahan's ordering of Heron's formula, accurate for needles too). The sum's absolute
+  // round-off is below 1e-14 times the sum of the magnitudes of the quotients. Returns +1 (certainly Delaunay, with
+  // room for delaunayMargin's 1e-12 tolerance), −1 (certainly not Delaunay: α + β > π, so the quad is convex and the
+  // flip is admissible), 0 (too close to call: delaunayMargin decides).
+  if (tri_.background != Background::Euclidean) return 0;
+  const HalfedgeMesh& m = tri_.mesh;
+  const int h = m.edgeHalfedge(e), g = m.twin(h);
+  const double a = tri_.edgeLengths[e], a2 = a * a;
+  double sum = 0, scale = 0;
+  for (int x : {h, g}) {
+    const double b = tri_.length(HalfedgeMesh::next(x)), c = tri_.length(HalfedgeMesh::prev(x));
+    const double area4 = detail::fourAreaEuclidean(a, b, c);
+    if (!(area4 > 0)) return 0;
+    sum += (b * b + c * c - a2) / area4;
+    scale += (b * b + c * c + a2) / area4;
+  }
+  const double bound = 1e-14 * scale;
+  if (sum > bound + 1e-12) return 1;
+  if (sum < -bound) return -1;
+  return 0;
+}
+
+void Refiner::restoreDelaunay(std::vector<int> stack, int center) {
+  const HalfedgeMesh& m = tri_.mesh;
+  // Lawson's algorithm terminates (Bobenko–Springborn in each background); the cap only guards against invalid input.
+  std::int64_t budget = 1000LL * (m.nEdges() + 16);
+  while (!stack.empty()) {
+    const int e = stack.back();
+    stack.pop_back();
+    if (m.isBoundaryEdge(e)) continue;
+    const int sign = delaunaySign(e);
+    if (sign > 0 || (sign == 0 && intrinsic::delaunayMargin(tri_, e) >= -opt_.delaunayTolerance)) continue;
+    const int h = m.edgeHalfedge(e), g = m.twin(h);
+    const int quad[4] = {m.edge(HalfedgeMesh::next(h)), m.edge(HalfedgeMesh::prev(h)), m.edge(HalfedgeMesh::next(g)),
+                         m.edge(HalfedgeMesh::prev(g))};
+    const std::int64_t before = res_.statistics.flips;
+    flip(e);
+    if (res_.statistics.flips == before)
+      continue;  // not flippable (non-convex quad); cannot happen for a non-Delaunay
+                 // edge of a valid triangulation, and is harmless if it does
+    // After inserting `center`, only the two quad sides away from it can have become non-Delaunay (the classical
+    // incremental-insertion argument); a generic pass (or a degenerate quad with center at both ends) checks all four.
+    int pushed = 0;
+    for (int q : quad) {
+      const int hq = m.edgeHalfedge(q);
+      if (center != kInvalid && (m.tail(hq) == center || m.tip(hq) == center)) continue;
+      stack.push_back(q);
+      ++pushed;
+    }
+    if (pushed == 0)
+      for (int q : quad) stack.push_back(q);
+    if (--budget < 0)
+      throw ConvergenceError("refine: Lawson flipping did not terminate (last edge " + std::to_string(e) +
+                             "): the metric is not valid");
+  }
+}
+
+void Refiner::countInsertion() {
+  ++insertions_;
+  if (insertions_ > opt_.maxInsertions)
+    throw ConvergenceError("refine: stopped after " + std::to_string(opt_.maxInsertions) +
+                           " insertions (the cap maxInsertions): epsilon " + num(opt_.epsilon) +
+                           " is too small for this surface, or raise the cap");
+  if (opt_.progress && opt_.progressEvery > 0 && insertions_ % opt_.progressEvery == 0)
+    opt_.progress({insertions_, tri_.mesh.nVertices(), faceQueue_.size()});
+}
+
+void Refiner::afterInsertion(int p) {
+  const HalfedgeMesh& m = tri_.mesh;
+  edgeLoop_.resize(m.nEdges(), -1);
+  sharpCorner_.resize(m.nVertices(), 0);
+  std::vector<int> stack;
+  const int start = m.vertexHalfedge(p);
+  int h = start;
+  do {
+    stack.push_back(m.edge(HalfedgeMesh::next(h)));
+    h = m.nextOutgoing(h);
+  } while (h != kInvalid && h != start);
+  restoreDelaunay(std::move(stack), p);
+  pushFacesAround(p);
+}
+
+void Refiner::splitSegment(int e) {
+  countInsertion();
+  const HalfedgeMesh& m = tri_.mesh;
+  const int ha = m.edgeHalfedge(e), pa = HalfedgeMesh::prev(ha);
+  const int loop = edgeLoop_[e];
+  const LoopCircle& lc = loops_[loop];
+  const double L = tri_.edgeLengths[e];
+  const std::array<Vec3, 3> P = layoutAtHalfedge(tri_, model_, ha);
+  const int k = ha % 3;
+  const Vec3 A = P[k], B = P[(k + 1) % 3], C = P[(k + 2) % 3];
+  Vec3 M;
+  if (lc.circle) {
+    // The arc midpoint: the circle through a and b of radius R has its centre at height ±√(R² − L²/4) over the chord
+    // (left of a→b for an outer loop); the arc's midpoint is R from the centre, on the far side from it.
+    const double R = std::max(lc.radius, L / 2);
+    const double hC = std::sqrt(std::max(0.0, R * R - L * L / 4));
+    M = Vec3(L / 2, lc.centerOnLeft ? hC - R : R - hC, 1.0);
+  } else if (sharpCorner_[m.tail(ha)] || sharpCorner_[m.tip(ha)]) {
+    // Ruppert's concentric shells: a segment at a corner below 60° is split at the power of two (times the corner's
+    // scale, here 1) in [L/3, 2L/3] from the corner, so that the vertices on the corner's two segments lie on common
+    // circles around it and stop encroaching upon each other's segments (Ruppert 1995, Shewchuk 2002).
+    double d = std::exp2(std::round(std::log2(L / 2)));
+    if (d < L / 3) d *= 2;
+    if (d > 2 * L / 3) d /= 2;
+    M = model_.polar(sharpCorner_[m.tail(ha)] ? d : L - d, 0.0);
+  } else {
+    M = model_.polar(L / 2, 0.0);
+  }
+  const double ap = model_.distance(A, M), pb = model_.distance(M, B), pc = model_.distance(M, C);
+  if (L / 2 < minSize_ || orientationSign(A, M, C) <= 0 || orientationSign(M, B, C) <= 0) {
+    // Ruppert's algorithm need not terminate next to a boundary corner smaller than 60°: it keeps splitting the two
+    // segments there until they are degenerate. Name the sharpest boundary corner of this edge.
+    const std::vector<double> sums = intrinsic::angleSums(tri_);
+    const int u = m.tail(ha), w = m.tip(ha);
+    throw ConvergenceError(
+        "refine: boundary edge " + std::to_string(e) + " (vertices " + std::to_string(u) + ", " + std::to_string(w) +
+        ", length " + num(L) + ") cannot be split any more (smallest size " + num(minSize_) + "; apex " +
+        std::to_string(m.tail(pa)) + (L / 2 < minSize_ ? "" : " on the edge to round-off") +
+        "): refinement is cascading into a boundary corner of " + num(std::min(sums[u], sums[w]) * 180 / M_PI) +
+        "°; below 60° Ruppert's rules need not terminate — raise the shape bound B or remove the "
+        "sharp corner");
+  }
+  // Where the new vertex lies on the input: follow the geodesic from the apex c to it, on the input.
+  const int c = m.tail(pa);
+  const double psi =
+      wrapPi(model_.angleOf(C, model_.tangentToward(C, M)) - model_.angleOf(C, model_.tangentToward(C, A)));
+  const double theta = sp_.turned(tri_, pa, psi);
+  const InputSurface::Arrival arr =
+      inputPtr_->follow(c, c < res_.statistics.inputVertices, res_.locations[c], theta, pc);
+  const double arrivalHere = model_.angleOf(M, -model_.tangentToward(M, C));
+  const double angleToB = model_.angleOf(M, model_.tangentToward(M, B)) - arrivalHere + arr.angle;
+  const double turnAtA = lc.circle ? std::atan2(M.y(), M.x()) : 0.0;
+  const int p = splitEdgeWithSignposts(tri_, sp_, e, ap, pb, pc, 0.0, angleToB, turnAtA);
+  edgeLoop_.resize(m.nEdges(), -1);
+  edgeLoop_[m.nEdges() - 2] = loop;  // the half p-b (halfedge_mesh.cpp: appended first on a boundary split)
+  res_.locations.push_back(arr.location);
+  res_.lambda.push_back(uniform_ ? 0.0 : inputPtr_->interpolate(opt_.lambda, arr.location));
+  ++res_.statistics.boundarySplits;
+  afterInsertion(p);
+}
+
+std::vector<int> Refiner::encroachedByPoint(const TraceResult& trace) const {
+  // The faces whose circumcircle contains the point (its Delaunay cavity), grown from the face containing it. A point
+  // encroaching boundary edge s lies in the circumcircle of s's triangle whenever s itself is not encroached (that
+  // circumcircle then contains the half of s's diametral disk on the domain side), so only the cavity's boundary edges
+  // need testing. The in-circle test compares distances to the circumcentre; it decides only whether a boundary edge
+  // is split early, never the triangulation, so it does not need to be exact.
+  const HalfedgeMesh& m = tri_.mesh;
+  const Vec3& t = trace.end;
+  std::vector<int> result;
+  std::vector<std::pair<int, std::array<Vec3, 3>>> stack{{trace.face, trace.corners}};
+  std::vector<int> visited{trace.face};
+  auto encroaches = [&](const Vec3& a, const Vec3& b) {
+    return model_.inner(model_.tangentToward(t, a), model_.tangentToward(t, b)) < 0;
+  };
+  while (!stack.empty()) {
+    auto [f, P] = stack.back();
+    stack.pop_back();
+    for (int k = 0; k < 3; ++k) {
+      const int h = 3 * f + k, g = m.twin(h);
+      const Vec3 &Pp = P[k], &Q = P[(k + 1) % 3];
+      if (g == kInvalid) {
+        if (encroaches(Pp, Q)) result.push_back(m.edge(h));
+        continue;
+      }
+      const int f2 = HalfedgeMesh::face(g);
+      if (std::find(visited.begin(), visited.end(), f2) != visited.end()) continue;
+      std::array<Vec3, 3> R;
+      const int kg = g % 3;
+      R[kg] = Q;
+      R[(kg + 1) % 3] = Pp;
+      R[(kg + 2) % 3] = model_.thirdVertex(Q, Pp, fastCornerAngle(tri_, g), tri_.length(HalfedgeMesh::prev(g)));
+      const std::optional<Vec3> cc = model_.circumcenter(R[0], R[1], R[2]);
+      if (cc && model_.distance(*cc, t) < model_.distance(*cc, R[0])) {
+        visited.push_back(f2);
+        stack.push_back({f2, R});
+      }
+    }
+  }
+  return result;
+}
+
+void Refiner::insertOnEdge(const TraceResult& trace, int j, const InputSurface::Arrival& arr) {
+  // The point lies on the edge opposite corner j of trace.face (to within round-off): split that edge there.
+  const HalfedgeMesh& m = tri_.mesh;
+  const int f = trace.face, he = 3 * f + (j + 1) % 3;
+  const std::array<Vec3, 3>& P = trace.corners;
+  const int e = m.edge(he);
+  if (m.twin(he) == kInvalid) {
+    splitSegment(e);
+    return;
+  }
+  countInsertion();
+  Eigen::Vector3d b = trace.bary;
+  b[j] = 0;
+  b /= b.sum();
+  const Vec3 t = model_.fromBarycentric(P[0], P[1], P[2], b);
+  const int g = m.twin(he);
+  const Vec3 &X = P[(j + 1) % 3], &Y = P[(j + 2) % 3];  // he runs X -> Y; g runs Y -> X
+  const Vec3 D = model_.thirdVertex(Y, X, fastCornerAngle(tri_, g), tri_.length(HalfedgeMesh::prev(g)));
+  Vec3 a, bb, c, d;
+  if (m.edgeHalfedge(e) == he) {
+    a = X, bb = Y, c = P[j], d = D;
+  } else {
+    a = Y, bb = X, c = D, d = P[j];
+  }
+  const double arrivalHere = model_.angleOf(t, trace.arrivalTangent(model_));
+  const double angleToB = model_.angleOf(t, model_.tangentToward(t, bb)) - arrivalHere + arr.angle;
+  const int p = splitEdgeWithSignposts(tri_, sp_, e, model_.distance(a, t), model_.distance(t, bb),
+                                       model_.distance(t, c), model_.distance(t, d), angleToB, 0.0);
+  res_.locations.push_back(arr.location);
+  res_.lambda.push_back(uniform_ ? 0.0 : inputPtr_->interpolate(opt_.lambda, arr.location));
+  afterInsertion(p);
+}
+
+void Refiner::insertAt(const TraceResult& trace, const InputSurface::Arrival& arr) {
+  const std::array<Vec3, 3>& P = trace.corners;
+  const Vec3& t = trace.end;
+  // A point within 1e-9 (relative, in barycentric terms) of an edge would give a sliver whose lengths may violate the
+  // triangle inequality after rounding; it is inserted on the edge instead, moving it by at most ~1e-9 of the face's
+  // size.
+  int j = 0;
+  for (int k = 1; k < 3; ++k)
+    if (trace.bary[k] < trace.bary[j]) j = k;
+  std::array<double, 3> d{model_.distance(t, P[0]), model_.distance(t, P[1]), model_.distance(t, P[2])};
+  const IntrinsicTriangulation& T = tri_;
+  const int f = trace.face;
+  bool valid = trace.bary[j] > 1e-9;
+  for (int k = 0; k < 3 && valid; ++k)
+    valid = intrinsic::isValidTriangle(T.background, T.length(3 * f + k), d[k], d[(k + 1) % 3]);
+  if (!valid) {
+    insertOnEdge(trace, j, arr);
+    return;
+  }
+  countInsertion();
+  const double arrivalHere = model_.angleOf(t, trace.arrivalTangent(model_));
+  const double angleTo0 = model_.angleOf(t, model_.tangentToward(t, P[0])) - arrivalHere + arr.angle;
+  const int p = splitFaceWithSignposts(tri_, sp_, f, d, angleTo0);
+  res_.locations.push_back(arr.location);
+  res_.lambda.push_back(uniform_ ? 0.0 : inputPtr_->interpolate(opt_.lambda, arr.location));
+  afterInsertion(p);
+}
+
+void Refiner::processSegment(int e) {
+  if (e >= tri_.mesh.nEdges() || !tri_.mesh.isBoundaryEdge(e)) return;
+  if (segmentEncroached(e)) splitSegment(e);
+}
+
+void Refiner::processFace(int f) {
+  const HalfedgeMesh& m = tri_.mesh;
+  double shortest = INFINITY, longest = 0;
+  int longestK = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double l = tri_.length(3 * f + k);
+    shortest = std::min(shortest, l);
+    if (l > longest) longest = l, longestK = k;
+  }
+  const double R = intrinsic::faceCircumradius(tri_, f);  // +inf for a hyperbolic triangle without a circumcircle
+  // Strict comparisons with a relative slack of 1e-12: a triangle exactly at a bound (circumradius equal to ε, or to
+  // B times its shortest edge) is good, whatever the last bit of its computed circumradius.
+  // Shewchuk's terminator, in its simplest form: a triangle with a corner at a sharp boundary corner (< 60°) may be
+  // as skinny as that input angle forces, so only its size is enforced there; otherwise refinement would shrink the
+  // corner's triangles forever.
+  bool atSharpCorner = false;
+  if (hasBoundary_)
+    for (int k = 0; k < 3; ++k) atSharpCorner = atSharpCorner || sharpCorner_[m.faceVertex(f, k)];
+  const bool badShape = !atSharpCorner && R > opt_.ratioBound * shortest * (1 + 1e-12);
+  bool mayBeBadSize = R > opt_.epsilon * std::exp(-lambdaMax_) * (1 + 1e-12);
+  if (!badShape && !mayBeBadSize) return;
+  // Trace from the vertex opposite the longest edge: for an obtuse triangle the circumcentre lies beyond that edge, so
+  // this is the shortest way there.
+  const int hs = 3 * f + (longestK + 2) % 3;
+  const int v = m.tail(hs);
+  const std::array<Vec3, 3> P = layoutAtHalfedge(tri_, model_, hs);
+  const std::optional<Vec3> cc = model_.circumcenter(P[0], P[1], P[2]);
+  const bool centroid = !cc || !std::isfinite(R);
+  // Hyperbolic triangles whose vertices lie on a horocycle or hypercycle have no circumcircle; they are bad-sized for
+  // every ε and are split at their (Klein-model) centroid, which lies inside them.
+  Vec3 target = centroid ? model_.normalize(P[0] + P[1] + P[2]) : *cc;
+  bool offCenter = false;
+  if (badShape && opt_.offCenters && !centroid && in_.background == Background::Euclidean) {
+    // Üngör's off-centre: on the bisector of the shortest edge pq, at the height h = ℓ(B + √(B² − 1/4)) where the
+    // triangle it forms with pq has circumradius / shortest edge exactly B (apex angle arcsin(1/(2B))), unless the
+    // circumcentre is nearer. It lies on the segment from pq's midpoint to the circumcentre, inside the circumcircle,
+    // so the bad triangle is still destroyed.
+    int ks = 0;
+    for (int k = 1; k < 3; ++k)
+      if (tri_.length(3 * f + k) < tri_.length(3 * f + ks)) ks = k;
+    const Vec3 M = (P[ks] + P[(ks + 1) % 3]) / 2;
+    const Vec3 toC = *cc - M;
+    const double dist = std::hypot(toC.x(), toC.y());
+    const double B = opt_.ratioBound, h = shortest * (B + std::sqrt(B * B - 0.25));
+    if (h < dist) {
+      target = M + (h / dist) * toC;
+      offCenter = true;
+    }
+  }
+  const double r = model_.distance(BackgroundModel::origin(), target);
+  if (std::isfinite(R) && R < minSize_)
+    throw ConvergenceError("refine: face " + std::to_string(f) + " (vertices " + std::to_string(m.faceVertex(f, 0)) +
+                           ", " + std::to_string(m.faceVertex(f, 1)) + ", " + std::to_string(m.faceVertex(f, 2)) +
+                           ") still needs refining at circumradius " + num(R) + ", below the smallest size " +
+                           num(minSize_) + ": the shape bound B = " + num(opt_.ratioBound) +
+                           " cannot be met near this face (small input angle?)");
+  const double theta = sp_.turned(tri_, hs, std::atan2(target.y(), target.x()));
+  const TraceResult tr = traceFromVertex(tri_, sp_, model_, v, theta, r, hs);
+  res_.statistics.traceSteps += tr.steps;
+  if (!tr.reachedTarget()) {
+    // The circumcentre lies outside the domain: split the boundary edge the geodesic to it crosses (Ruppert).
+    ++res_.statistics.rejectedCircumcenters;
+    splitSegment(m.edge(tr.boundaryHalfedge));
+    pushFace(f);
+    return;
+  }
+  const InputSurface::Arrival arr =
+      inputPtr_->follow(v, v < res_.statistics.inputVertices, res_.locations[v], theta, r);
+  if (!badShape) {
+    const double lam = uniform_ ? 0.0 : inputPtr_->interpolate(opt_.lambda, arr.location);
+    if (!(R > opt_.epsilon * std::exp(-lam) * (1 + 1e-12))) return;
+  }
+  if (hasBoundary_) {
+    const std::vector<int> enc = encroachedByPoint(tr);
+    if (!enc.empty()) {
+      ++res_.statistics.rejectedCircumcenters;
+      for (int e : enc)
+        if (m.isBoundaryEdge(e)) splitSegment(e);
+      pushFace(f);
+      return;
+    }
+  }
+  if (centroid)
+    ++res_.statistics.centroidInsertions;
+  else if (offCenter)
+    ++res_.statistics.offCenterInsertions;
+  else
+    ++res_.statistics.circumcenterInsertions;
+  insertAt(tr, arr);
+}
+
+RefineResult Refiner::run() {
+  validate();
+  inputStore_.emplace(in_);
+  inputPtr_ = &*inputStore_;
+  tri_ = in_;
+  const int nV = in_.mesh.nVertices();
+  res_.statistics.inputVertices = nV;
+  sp_ = inputPtr_->signposts();
+  uniform_ =
+      opt_.lambda.empty() || std::all_of(opt_.lambda.begin(), opt_.lambda.end(), [](double x) { return x == 0.0; });
+  if (!uniform_) {
+    lambdaMax_ = *std::max_element(opt_.lambda.begin(), opt_.lambda.end());
+  }
+  for (int v = 0; v < nV; ++v) {
+    res_.locations.push_back(inputPtr_->vertexLocation(v));
+    res_.lambda.push_back(uniform_ ? 0.0 : opt_.lambda[v]);
+  }
+  const double shortestInput = *std::min_element(in_.edgeLengths.begin(), in_.edgeLengths.end());
+  minSize_ = opt_.minCircumradius > 0 ? opt_.minCircumradius
+                                      : 1e-6 * std::min(opt_.epsilon * std::exp(-lambdaMax_), shortestInput);
+  setupBoundary();
+
+  std::vector<int> all(tri_.mesh.nEdges());
+  for (int e = 0; e < tri_.mesh.nEdges(); ++e) all[e] = e;
+  restoreDelaunay(all);
+  for (int f = 0; f < tri_.mesh.nFaces(); ++f) pushFace(f);
+  for (int e = 0; e < tri_.mesh.nEdges(); ++e)
+    if (tri_.mesh.isBoundaryEdge(e)) segmentQueue_.push_back(e);
+
+  for (;;) {
+    if (!segmentQueue_.empty()) {
+      const int e = segmentQueue_.front();
+      segmentQueue_.pop_front();
+      processSegment(e);
+      continue;
+    }
+    if (faceQueue_.empty()) break;
+    const int f = faceQueue_.top().second;
+    faceQueue_.pop();
+    faceQueued_[f] = 0;
+    processFace(f);
+  }
+  return std::move(res_);
+}
+
+}  // namespace
+
+RefineResult refineDelaunay(const IntrinsicTriangulation& input, const RefineOptions& options) {
+  Refiner refiner(input, options);
+  return refiner.run();
+}
+
+}  // namespace conformesh::refine
