@@ -7,6 +7,8 @@
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh_io.h"
+#include "conformesh/intrinsic/metric_families.h"
+#include "conformesh/intrinsic/sampled_metric.h"
 
 namespace conformesh::apps {
 
@@ -34,10 +36,21 @@ std::map<std::string, double> parseParameters(const std::vector<std::string>& ar
     char* end = nullptr;
     const double x = std::strtod(value.c_str(), &end);
     if (value.empty() || *end != '\0' || !std::isfinite(x))
-      throw InputError("--param '" + a + "': the value '" + value + "' is not a finite number");
+      throw InputError("--param '" + a + "': value '" + value + "' is not a number (expected a finite value)");
     if (!params.emplace(key, x).second) throw InputError("--param '" + key + "' is given twice");
   }
   return params;
+}
+
+
+std::unique_ptr<intrinsic::SmoothMetric> loadMetric(const std::string& command, const std::string& family,
+                                                    const std::vector<std::string>& params, const std::string& field) {
+  if (family.empty() == field.empty())
+    throw InputError(command + ": give exactly one of a FAMILY name (see `conformesh discretize --list`) or --field FILE");
+  if (field.empty()) return intrinsic::makeMetric(family, parseParameters(params));
+  if (!params.empty()) throw InputError(command + ": --param applies to families, not to --field");
+  progress("reading metric field " + field);
+  return std::make_unique<intrinsic::SampledMetric>(intrinsic::readSampledField(field));
 }
 
 }  // namespace conformesh::apps

@@ -3,12 +3,14 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "conformesh/intrinsic/mesh_data.h"
+#include "conformesh/intrinsic/smooth_metric.h"
 
 namespace conformesh::apps {
 
@@ -27,5 +29,10 @@ intrinsic::MeshData loadMesh(const std::string& path);
 
 // Parses `--param key=value` arguments into a map; throws InputError naming the argument when it is not key=number.
 std::map<std::string, double> parseParameters(const std::vector<std::string>& args);
+
+// The metric a command was given: exactly one of a family name with `--param`s, or a sampled field file. Throws
+// InputError, prefixed with `command`, when both or neither are given.
+std::unique_ptr<intrinsic::SmoothMetric> loadMetric(const std::string& command, const std::string& family,
+                                                    const std::vector<std::string>& params, const std::string& field);
 
 }  // namespace conformesh::apps

@@ -7,6 +7,11 @@
 namespace conformesh::apps {
 
 void registerInfoCommand(CLI::App& app);
+void registerDiscretizeCommand(CLI::App& app);
 void registerGenerateCommand(CLI::App& app);
+void registerRemeshCommand(CLI::App& app);
+void registerConvergenceCommand(CLI::App& app);
+void registerUniformizeCommand(CLI::App& app);
+void registerRefineCommand(CLI::App& app);
 
 }  // namespace conformesh::apps

@@ -54,41 +54,13 @@ void printList(bool json) {
     std::cout << s.str();
 }
 
-std::map<std::string, double> parseParams(const std::vector<std::string>& items) {
-  std::map<std::string, double> out;
-  for (const std::string& item : items) {
-    const size_t eq = item.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw InputError("--param '" + item + "': expected KEY=VALUE, e.g. --param a=0.9");
-    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
-    try {
-      size_t used = 0;
-      const double x = std::stod(value, &used);
-      if (used != value.size()) throw std::invalid_argument(value);
-      out[key] = x;
-    } catch (const std::exception&) {
-      throw InputError("--param '" + item + "': value '" + value + "' is not a number");
-    }
-  }
-  return out;
-}
-
 void run(const DiscretizeArgs& a) {
   if (a.list) {
     printList(a.json);
     return;
   }
-  if (a.family.empty() == a.field.empty())
-    throw InputError("discretize: give exactly one of a FAMILY name (see --list) or --field FILE");
   if (a.output.empty()) throw InputError("discretize: -o/--output is required (a .ply file)");
-  std::unique_ptr<intrinsic::SmoothMetric> metric;
-  if (!a.field.empty()) {
-    if (!a.params.empty()) throw InputError("discretize: --param applies to families, not to --field");
-    progress("reading metric field " + a.field);
-    metric = std::make_unique<intrinsic::SampledMetric>(intrinsic::readSampledField(a.field));
-  } else {
-    metric = intrinsic::makeMetric(a.family, parseParams(a.params));
-  }
+  const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetric("discretize", a.family, a.params, a.field);
   progress("discretizing " + metric->description() + " at resolution " + std::to_string(a.resolution));
   intrinsic::DiscretizationOptions opt;
   opt.resolution = a.resolution;

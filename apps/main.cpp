@@ -23,7 +23,12 @@ int main(int argc, char** argv) {
   app.parse_complete_callback([&] { conformesh::apps::setQuiet(quiet); });
 
   conformesh::apps::registerInfoCommand(app);
+  conformesh::apps::registerDiscretizeCommand(app);
   conformesh::apps::registerGenerateCommand(app);
+  conformesh::apps::registerRemeshCommand(app);
+  conformesh::apps::registerConvergenceCommand(app);
+  conformesh::apps::registerUniformizeCommand(app);
+  conformesh::apps::registerRefineCommand(app);
 
   try {
     app.parse(argc, argv);

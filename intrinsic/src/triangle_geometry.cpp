@@ -35,10 +35,15 @@ Background backgroundFromString(const std::string& name, const std::string& sour
 }
 
 HalfPerimeter halfPerimeter(double a, double b, double c) {
-  // Sort while remembering which side is which.
-  double v[3] = {a, b, c};
+  // Sort descending while remembering which side is which: three compare-and-swaps (every angle goes through here).
+  const double v[3] = {a, b, c};
   int idx[3] = {0, 1, 2};
-  std::sort(idx, idx + 3, [&](int i, int j) { return v[i] > v[j]; });
+  auto order = [&](int i, int j) {
+    if (v[idx[i]] < v[idx[j]]) std::swap(idx[i], idx[j]);
+  };
+  order(0, 1);
+  order(1, 2);
+  order(0, 1);
   const double x = v[idx[0]], y = v[idx[1]], z = v[idx[2]];
   double diff[3];
   diff[idx[0]] = 0.5 * (z - (x - y));

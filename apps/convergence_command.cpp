@@ -1,0 +1,167 @@
+// convergence_command.cpp — `conformesh convergence FAMILY [--vertices 1k,2k,...]`: the paper's §6 study on any smooth
+// metric: a table (CSV and JSON) of vertices, triangles, circumradii, angles, e_G and time per mesh, the fitted orders,
+// and PNG plots of Figs. 10 (a–d), 11 (a, c) and 12 (histogram) drawn by scripts/plot_convergence.py (matplotlib).
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "cli_common.h"
+#include "commands.h"
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/metric_families.h"
+#include "conformesh/refine/convergence_study.h"
+#include "report_json.h"
+
+
+namespace conformesh::apps {
+
+namespace {
+
+struct ConvergenceArgs {
+  std::string family;
+  std::vector<std::string> params;
+  std::string field;
+  std::string vertices;
+  int levels = 0;
+  double ratio = 1.4142135623730951;
+  int t0Resolution = 10;
+  std::string prefix = "convergence";
+  bool json = false, noPlot = false;
+};
+
+// "1k,2k,4500" → {1000, 2000, 4500}.
+std::vector<int> parseCounts(const std::string& list) {
+  std::vector<int> out;
+  std::stringstream in(list);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    char* end = nullptr;
+    double x = std::strtod(item.c_str(), &end);
+    if (end && (*end == 'k' || *end == 'K')) {
+      x *= 1000;
+      ++end;
+    }
+    if (item.empty() || !end || *end != '\0' || !(x >= 10) || x > 1e8)
+      throw InputError("--vertices: '" + item + "' is not a vertex count (expected e.g. 1k,2k,4500)");
+    out.push_back(static_cast<int>(x));
+  }
+  return out;
+}
+
+void run(const ConvergenceArgs& a) {
+  const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetric("convergence", a.family, a.params, a.field);
+  refine::ConvergenceOptions o;
+  if (!a.vertices.empty()) {
+    o.targetVertices = parseCounts(a.vertices);
+  } else if (a.levels > 0) {
+    // The first `levels` of the paper's Table 2 counts.
+    if (a.levels < 2 || a.levels > 11) throw InputError("--levels: expected 2 to 11, found " + std::to_string(a.levels));
+    o.targetVertices.resize(a.levels);
+  }
+  o.remesh.ratioBound = a.ratio;
+  o.remesh.t0Resolution = a.t0Resolution;
+  o.progress = [](const std::string& s) { progress(s); };
+  const refine::ConvergenceStudy study = refine::runConvergenceStudy(*metric, o);
+
+  nlohmann::json levels = nlohmann::json::array();
+  const std::string csvPath = a.prefix + ".csv", jsonPath = a.prefix + ".json";
+  std::ofstream csv(csvPath);
+  if (!csv) throw InputError(csvPath + ": cannot open for writing");
+  csv << "target_vertices,vertices,triangles,eps,max_circumradius,mean_circumradius,min_angle_deg,"
+         "mean_min_angle_deg,e_G,max_error,fraction_within,inverted_triangles,total_area,gauss_bonnet_residual,"
+         "seconds\n";
+  for (const auto& L : study.levels) {
+    char row[512];
+    std::snprintf(row, sizeof row, "%d,%d,%d,%.10g,%.10g,%.10g,%.6f,%.6f,%.10g,%.10g,%.6f,%d,%.15g,%.3e,%.3f\n",
+                  L.targetVertices, L.vertices, L.triangles, L.epsilon, L.quality.maxCircumradius,
+                  L.quality.meanCircumradius, L.quality.minAngleDeg, L.quality.meanMinAngleDeg,
+                  L.measure.meanAbsoluteError, L.measure.maxAbsoluteError, L.measure.fractionWithinBand,
+                  L.invertedTriangles, L.totalArea, L.quality.gaussBonnetResidual, L.seconds);
+    csv << row;
+    levels.push_back({{"target_vertices", L.targetVertices},
+                      {"vertices", L.vertices},
+                      {"triangles", L.triangles},
+                      {"eps", L.epsilon},
+                      {"quality", qualityJson(L.quality)},
+                      {"inverted_triangles", L.invertedTriangles},
+                      {"total_area", L.totalArea},
+                      {"gaussian_curvature_measure", curvatureMeasureJson(L.measure, o.measure)},
+                      {"seconds", L.seconds}});
+  }
+  csv.close();
+  nlohmann::json j = {{"metric", study.metric},
+                      {"smooth_area", study.smoothArea},
+                      {"t0_vertices", study.t0Vertices},
+                      {"ratio_bound", a.ratio},
+                      {"uniformization", uniformizationJson(study.uniformization)},
+                      {"orders",
+                       {{"e_G_vs_mean_circumradius", study.orderErrorVsCircumradius},
+                        {"mean_circumradius_vs_vertices", study.orderCircumradiusVsVertices},
+                        {"area_error_vs_mean_circumradius", study.orderAreaVsCircumradius}}},
+                      {"levels", levels},
+                      {"finest_relative_errors", study.levels.back().measure.relativeError}};
+  std::ofstream(jsonPath) << j.dump(1) << '\n';
+  std::vector<std::string> written = {csvPath, jsonPath};
+  if (!a.noPlot) {
+    // The installed script, else the source tree's (running from a build folder).
+    const std::string script = std::filesystem::exists(CONFORMESH_INSTALLED_PLOT_SCRIPT)
+                                   ? CONFORMESH_INSTALLED_PLOT_SCRIPT
+                                   : CONFORMESH_SOURCE_PLOT_SCRIPT;
+    // Debian's interpreter, which python3-matplotlib belongs to, ahead of any other python3 on the PATH.
+    const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+    const std::string cmd = python + " '" + script + "' '" + jsonPath + "' '" + a.prefix + "'";
+    if (std::system(cmd.c_str()) != 0)
+      progress("plots skipped: `" + cmd + "` failed (needs python3-matplotlib); the CSV and JSON are written");
+    else
+      for (const char* s : {"_fig10.png", "_fig11.png", "_fig12.png"}) written.push_back(a.prefix + s);
+  }
+  if (a.json) {
+    j.erase("finest_relative_errors");
+    j["written"] = written;
+    printJson(j);
+    return;
+  }
+  std::printf("%s: %zu meshes, T0 of %d vertices\n", study.metric.c_str(), study.levels.size(), study.t0Vertices);
+  std::printf("%9s %9s %11s %11s %9s %9s %11s %8s %7s\n", "vertices", "triangles", "max R", "mean R", "min ang",
+              "mean min", "e_G", "within", "sec");
+  for (const auto& L : study.levels)
+    std::printf("%9d %9d %11.4e %11.4e %9.3f %9.3f %11.4e %7.1f%% %7.2f\n", L.vertices, L.triangles,
+                L.quality.maxCircumradius, L.quality.meanCircumradius, L.quality.minAngleDeg,
+                L.quality.meanMinAngleDeg, L.measure.meanAbsoluteError, 100 * L.measure.fractionWithinBand, L.seconds);
+  std::printf("fitted orders: e_G ~ R^%.3f, mean R ~ V^%.3f, |area error| ~ R^%.3f\n", study.orderErrorVsCircumradius,
+              study.orderCircumradiusVsVertices, study.orderAreaVsCircumradius);
+  for (const auto& w : written) std::printf("written: %s\n", w.c_str());
+}
+
+}  // namespace
+
+void registerConvergenceCommand(CLI::App& app) {
+  auto a = std::make_shared<ConvergenceArgs>();
+  CLI::App* sub = app.add_subcommand("convergence", "Measure curvature convergence over a sweep of meshes (paper §6)");
+  sub->footer(
+      "Remeshes one uniformization of the metric at a sequence of eps chosen to hit the target vertex counts\n"
+      "(default: the paper's Table 2, 1021 ... 21876), and for each mesh measures, in the original metric: largest\n"
+      "and mean circumradius, smallest angle, mean per-triangle smallest angle, and e_G, the mean over vertices of\n"
+      "|sum of angle deficits - integral of K dA| over geodesic balls of radius 0.05*sqrt(area) (paper eq. 5).\n"
+      "Fits, by least squares on logs: e_G against mean circumradius (Theorem 3.4: order >= 1), mean circumradius\n"
+      "against vertices (-1/2, paper Fig. 10b), area error against mean circumradius (2).\n"
+      "Writes PREFIX.csv, PREFIX.json and, with python3-matplotlib, PREFIX_fig10.png (a-d), PREFIX_fig11.png (a, c)\n"
+      "and PREFIX_fig12.png (histogram of relative errors on the finest mesh).\n"
+      "Example: conformesh convergence kerr-newman --param a=0.95 --vertices 1k,2k,4k,8k -o kerr95");
+  sub->add_option("family", a->family, "Metric family (see `conformesh discretize --list`)");
+  sub->add_option("--field", a->field, "Sampled metric field file instead of a family (format: docs/metrics.md)");
+  sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
+  sub->add_option("--vertices", a->vertices, "Target vertex counts, e.g. 1k,2k,4k,8k");
+  sub->add_option("--levels", a->levels, "Use the first N counts of the paper's Table 2 (2..11)");
+  sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (default sqrt(2))");
+  sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of T0, shared by all meshes (default 10)");
+  sub->add_option("-o,--output", a->prefix, "Prefix of the files written (default: convergence)");
+  sub->add_flag("--json", a->json, "Print the table and orders as JSON");
+  sub->add_flag("--no-plot", a->noPlot, "Do not draw the PNG plots");
+  sub->callback([a] { run(*a); });
+}
+
+}  // namespace conformesh::apps

@@ -1,0 +1,64 @@
+// convergence_study.h — the paper's experiment (§6, Table 2, Figs. 10–12), run on any smooth metric: remesh one
+// uniformization at a sequence of ε calibrated to hit target vertex counts, measure each mesh's quality in the original
+// metric and its Gaussian-curvature-measure error e_G, and fit the orders: e_G against the mean circumradius (Theorem
+// 3.4: ≥ 1), the mean circumradius against the vertex count (−1/2, Fig. 10b), the area error against the mean
+// circumradius (2).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "conformesh/intrinsic/gaussian_curvature_measure.h"
+#include "conformesh/refine/remesh.h"
+
+namespace conformesh::refine {
+
+// The vertex counts of the paper's Table 2 (T1 … T11).
+std::vector<int> paperTable2Vertices();
+
+struct ConvergenceOptions {
+  std::vector<int> targetVertices = paperTable2Vertices();
+  // Pipeline settings shared by every level (epsilon is chosen per level). The default T0 resolution here is 10
+  // (≈ 10³ vertices on sphere charts), below the smallest target, so that every level is a refinement of one T0.
+  RemeshOptions remesh = [] {
+    RemeshOptions r;
+    r.t0Resolution = 10;
+    return r;
+  }();
+  intrinsic::CurvatureMeasureOptions measure;
+  // A level whose vertex count misses its target by more than this fraction is remeshed once more at a corrected ε
+  // (vertex counts scale like ε⁻²).
+  double calibrationTolerance = 0.15;
+  std::function<void(const std::string&)> progress;
+};
+
+struct ConvergenceLevel {
+  int targetVertices = 0, vertices = 0, triangles = 0;
+  double epsilon = 0;
+  QualityReport quality;  // in the original metric
+  int invertedTriangles = 0;
+  double totalArea = 0;
+  intrinsic::CurvatureMeasureResult measure;  // per-vertex vectors are kept only for the finest level
+  double seconds = 0;
+};
+
+struct ConvergenceStudy {
+  std::string metric;
+  double smoothArea = 0;  // ∫ dA of the metric over its chart (adaptive quadrature)
+  intrinsic::UniformizationReport uniformization;
+  int t0Vertices = 0;
+  std::vector<ConvergenceLevel> levels;
+  // Least-squares slopes of the log–log data over all levels.
+  double orderErrorVsCircumradius = 0;  // log e_G against log mean circumradius
+  double orderCircumradiusVsVertices = 0;  // log mean circumradius against log vertices
+  double orderAreaVsCircumradius = 0;   // log |area − smooth area| against log mean circumradius
+};
+
+ConvergenceStudy runConvergenceStudy(const intrinsic::SmoothMetric& metric, const ConvergenceOptions& options = {});
+
+// Least-squares slope of log y against log x (all values must be positive; throws InputError naming the first that
+// is not).
+double fitLogLogSlope(const std::vector<double>& x, const std::vector<double>& y);
+
+}  // namespace conformesh::refine

@@ -1,0 +1,90 @@
+// remesh.h — the whole pipeline for a surface given by a smooth metric (the paper's §5.1, intrinsically):
+// discretize the chart into T0 → uniformize T0 by discrete Ricci flow (T0*, conformal factor λ) → Delaunay refinement
+// of T0* graded by e^(−λ) (T1*) → pull back: each vertex of T1* goes to its point of T0 through the flow's
+// correspondence, then to the chart by T0's piecewise-linear parametrization, and every edge of the output T1 gets the
+// length of its curve in the ORIGINAL metric.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "conformesh/intrinsic/mesh_data.h"
+#include "conformesh/intrinsic/metric_discretization.h"
+#include "conformesh/intrinsic/smooth_metric.h"
+#include "conformesh/intrinsic/uniformization.h"
+#include "conformesh/refine/delaunay_refinement.h"
+#include "conformesh/intrinsic/vtk_writer.h"
+#include "conformesh/refine/refinement_quality.h"
+
+namespace conformesh::refine {
+
+struct RemeshOptions {
+  // Size bound ε in the ORIGINAL metric: circumradii of the output are ≈ ε or less (paper §4.2.3: the uniformized
+  // bound ε·e^(−λ) pulls back to ε). Required, > 0.
+  double epsilon = 0;
+  // Shape bound B (circumradius / shortest edge) of the refinement; see RefineOptions::ratioBound.
+  double ratioBound = 1.4142135623730951;
+  // λ ≡ 0: uniform in the uniformized domain (not on the surface); for comparisons only.
+  bool uniform = false;
+  // T0: resolution of the discretization of the chart (DiscretizationOptions::resolution); the discrete conformal map
+  // of T0 is the only approximation of the smooth one, so it should be fine enough that its angle distortion is well
+  // below the refinement's angle bound. 0 = automatic: 32 (≈ 10⁴ vertices for sphere charts).
+  int t0Resolution = 0;
+  intrinsic::DiscretizationOptions discretization;
+  intrinsic::UniformizationOptions uniformization;
+  // Passed through to the refinement (epsilon, ratioBound and lambda are set from the fields above).
+  RefineOptions refinement;
+  std::function<void(const std::string&)> progress;
+};
+
+struct RemeshTimes {
+  double discretize = 0, uniformize = 0, refine = 0, pullBack = 0;
+};
+
+struct RemeshResult {
+  // T1: the output triangulation; lengths are metric lengths of the edges' curves in the original metric (Euclidean
+  // background: each triangle is the flat triangle with those lengths).
+  intrinsic::IntrinsicTriangulation mesh;
+  std::vector<Eigen::Vector2d> chart;        // per vertex: chart coordinates (u, v)
+  std::vector<Eigen::Vector3d> reference;    // per vertex: point of the chart's pole-free reference surface
+  std::vector<Eigen::Vector3d> positions;    // per vertex: the embedding, when the metric has one; else empty
+  std::vector<double> lambda;                // per vertex: conformal factor interpolated at the vertex
+  std::vector<int> t0Face;                   // per vertex: face of T0 containing it
+  std::vector<Eigen::Vector3d> t0Bary;       // and its barycentric coordinates there
+  int t0Vertices = 0, t0Faces = 0;
+  int invertedTriangles = 0;  // output triangles whose image in the chart's reference surface is inverted (should be 0)
+  intrinsic::UniformizationReport uniformization;
+  RefineStatistics refinement;
+  QualityReport uniformQuality;  // of T1* in its background metric
+  QualityReport quality;         // of T1 in the original metric
+  RemeshTimes seconds;
+};
+
+// Throws InputError for bad parameters (naming them) and ConvergenceError when a stage does not converge.
+RemeshResult remeshMetric(const intrinsic::SmoothMetric& metric, const RemeshOptions& options);
+
+// The first two stages alone, for sweeps that refine one uniformization at several ε (`conformesh convergence`).
+struct UniformizedMetric {
+  intrinsic::IntrinsicTriangulation t0;
+  std::vector<Eigen::Vector3d> t0Reference;  // per T0 vertex: its point on the chart's reference surface
+  std::vector<Eigen::Vector2d> t0Chart;      // per T0 vertex: chart coordinates
+  intrinsic::Uniformization uniformization;
+  double discretizeSeconds = 0, uniformizeSeconds = 0;
+};
+UniformizedMetric uniformizeMetric(const intrinsic::SmoothMetric& metric, const RemeshOptions& options);
+// Stages 3 and 4 on a prepared uniformization (options.epsilon, ratioBound, uniform and refinement are used).
+RemeshResult remeshUniformized(const UniformizedMetric& prepared, const intrinsic::SmoothMetric& metric,
+                               const RemeshOptions& options);
+
+// The output for files: faces, edges with their lengths, positions where the metric has an embedding, and per-vertex
+// properties u, v (chart), lambda, curvature (angle deficit / boundary turning), smooth_curvature (K of the metric at
+// the vertex), input_face and input_b0..2 (the vertex's place on T0); comments name the metric and ε.
+intrinsic::MeshData toMeshData(const RemeshResult& result, const intrinsic::SmoothMetric& metric, double epsilon);
+// The same for ParaView: points are the embedding where known, else the chart's reference surface (the unit sphere
+// for sphere charts); the per-vertex properties become point fields.
+intrinsic::VtkMesh toVtkMesh(const intrinsic::MeshData& data, const RemeshResult& result);
+
+}  // namespace conformesh::refine
