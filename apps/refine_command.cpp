@@ -10,6 +10,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "report_json.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh_io.h"
 #include "conformesh/refine/delaunay_refinement.h"
@@ -27,22 +28,6 @@ struct RefineArgs {
   std::string boundary = "auto";
   std::int64_t maxInsertions = 50'000'000;
 };
-
-nlohmann::json qualityJson(const refine::QualityReport& q) {
-  return {{"vertices", q.vertices},
-          {"triangles", q.triangles},
-          {"min_angle_deg", q.minAngleDeg},
-          {"mean_min_angle_deg", q.meanMinAngleDeg},
-          {"max_angle_deg", q.maxAngleDeg},
-          {"max_circumradius", q.maxCircumradius},
-          {"mean_circumradius", q.meanCircumradius},
-          {"max_radius_edge_ratio", q.maxRadiusEdgeRatio},
-          {"fraction_below_30_deg", q.fractionBelow30},
-          {"angle_histogram_bin_deg", q.histogramBinDeg},
-          {"angle_histogram", q.angleHistogram},
-          {"non_delaunay_edges", q.nonDelaunayEdges},
-          {"gauss_bonnet_residual", q.gaussBonnetResidual}};
-}
 
 void run(const RefineArgs& args) {
   intrinsic::MeshData data = loadMesh(args.input);

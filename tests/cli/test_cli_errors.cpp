@@ -2,9 +2,6 @@
 // stderr naming the file and the element, exit status 1, and never a crash (signal), a hang or a partial output file.
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -12,41 +9,19 @@
 #include <sstream>
 #include <string>
 
+#include "../support/cli_runner.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int status = -1;  // exit status, or −signal
-  std::string out, err;
-};
+using Run = conformesh::testing::CliRun;
+using conformesh::testing::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Runs the CLI with a 60 s timeout (a hang fails the test instead of the whole suite).
-// One scratch folder per process: CTest runs the test cases of this program in parallel.
-fs::path scratch() { return fs::temp_directory_path() / ("conformesh_cli_test_" + std::to_string(getpid())); }
-
-Run conformesh(const std::string& args) {
-  const fs::path dir = scratch();
-  fs::create_directories(dir);
-  const std::string cmd = "timeout 60 " + std::string(CONFORMESH_CLI) + " " + args + " >" + (dir / "out").string() +
-                          " 2>" + (dir / "err").string();
-  const int raw = std::system(cmd.c_str());
-  Run r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -WTERMSIG(raw);
-  r.out = slurp(dir / "out");
-  r.err = slurp(dir / "err");
-  return r;
-}
+Run cli(const std::string& args) { return conformesh::testing::runConformesh(args); }
 
 fs::path writeFile(const std::string& name, const std::string& bytes) {
-  const fs::path p = scratch() / name;
+  const fs::path p = conformesh::testing::scratchDir() / name;
   fs::create_directories(p.parent_path());
   std::ofstream(p, std::ios::binary) << bytes;
   return p;
@@ -71,46 +46,46 @@ const char* kPlyHeader =
 }  // namespace
 
 TEST_CASE("conformesh info: bad files") {
-  SECTION("missing file") { requireCleanError(conformesh("info /nonexistent/mesh.obj"), "/nonexistent/mesh.obj", "cannot open"); }
+  SECTION("missing file") { requireCleanError(cli("info /nonexistent/mesh.obj"), "/nonexistent/mesh.obj", "cannot open"); }
   SECTION("empty file") {
     const auto p = writeFile("empty.off", "");
-    requireCleanError(conformesh("info " + p.string()), "empty.off", "");
+    requireCleanError(cli("info " + p.string()), "empty.off", "");
   }
   SECTION("truncated ASCII OFF") {
     const auto p = writeFile("trunc.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n");
-    requireCleanError(conformesh("info " + p.string()), "trunc.off", "");
+    requireCleanError(cli("info " + p.string()), "trunc.off", "");
   }
   SECTION("truncated binary PLY") {
     std::string bytes = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
                         "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
     bytes += std::string(40, '\0');  // 3 vertices need 72 bytes
     const auto p = writeFile("trunc.ply", bytes);
-    requireCleanError(conformesh("info " + p.string()), "trunc.ply", "");
+    requireCleanError(cli("info " + p.string()), "trunc.ply", "");
   }
   SECTION("garbage tokens") {
     const auto p = writeFile("garbage.obj", "v 0 0 0\nv 1 0 zero\nv 0 1 0\nf 1 2 3\n");
-    requireCleanError(conformesh("info " + p.string()), "garbage.obj:2", "");
+    requireCleanError(cli("info " + p.string()), "garbage.obj:2", "");
   }
   SECTION("OBJ index zero and out of range") {
     const auto p0 = writeFile("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n");
-    requireCleanError(conformesh("info " + p0.string()), "zero.obj:4", "");
+    requireCleanError(cli("info " + p0.string()), "zero.obj:4", "");
     const auto p9 = writeFile("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
-    requireCleanError(conformesh("info " + p9.string()), "range.obj:4", "9");
+    requireCleanError(cli("info " + p9.string()), "range.obj:4", "9");
   }
 }
 
 TEST_CASE("conformesh info: bad meshes") {
   SECTION("face with a repeated vertex") {
     const auto p = writeFile("rep.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n");
-    requireCleanError(conformesh("info " + p.string()), "rep.off", "repeats vertex");
+    requireCleanError(cli("info " + p.string()), "rep.off", "repeats vertex");
   }
   SECTION("non-manifold edge") {
     const auto p = writeFile("fin.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
-    requireCleanError(conformesh("info " + p.string()), "fin.off", "non-manifold edge (0, 1)");
+    requireCleanError(cli("info " + p.string()), "fin.off", "non-manifold edge (0, 1)");
   }
   SECTION("pinched vertex") {
     const auto p = writeFile("bowtie.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 0 3 4\n");
-    requireCleanError(conformesh("info " + p.string()), "bowtie.off", "pinched vertex 0");
+    requireCleanError(cli("info " + p.string()), "bowtie.off", "pinched vertex 0");
   }
   SECTION("Möbius strip") {
     std::ostringstream off;
@@ -121,11 +96,11 @@ TEST_CASE("conformesh info: bad meshes") {
     for (int i = 0; i < n - 1; ++i) off << "3 " << i << " " << i + 1 << " " << n + i + 1 << "\n3 " << i << " " << n + i + 1 << " " << n + i << "\n";
     off << "3 " << n - 1 << " " << n << " 0\n3 " << n - 1 << " 0 " << 2 * n - 1 << "\n";
     const auto p = writeFile("moebius.off", off.str());
-    requireCleanError(conformesh("info " + p.string()), "moebius.off", "not orientable");
+    requireCleanError(cli("info " + p.string()), "moebius.off", "not orientable");
   }
   SECTION("NaN coordinate") {
     const auto p = writeFile("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
-    requireCleanError(conformesh("info " + p.string()), "nan.off", "");
+    requireCleanError(cli("info " + p.string()), "nan.off", "");
   }
   SECTION("zero, negative and NaN lengths, triangle inequality") {
     for (const auto& [name, lengths, what] :
@@ -135,25 +110,25 @@ TEST_CASE("conformesh info: bad meshes") {
           {"inequality.ply", "0 1 3\n1 2 1\n2 0 1\n", "triangle inequality"}}) {
       const auto p = writeFile(name, std::string(kPlyHeader) + "\n\n\n3 0 1 2\n" + lengths);
       INFO(name);
-      requireCleanError(conformesh("info " + p.string()), name, what);
+      requireCleanError(cli("info " + p.string()), name, what);
     }
   }
   SECTION("degenerate (zero-area) triangle from positions") {
     const auto p = writeFile("flat.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n");
-    requireCleanError(conformesh("info " + p.string()), "flat.off", "triangle inequality");
+    requireCleanError(cli("info " + p.string()), "flat.off", "triangle inequality");
   }
 }
 
 TEST_CASE("conformesh info: a good file, and --delaunay never clobbers on failure") {
   const auto good = writeFile("good.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
-  const Run r = conformesh("info " + good.string() + " --json");
+  const Run r = cli("info " + good.string() + " --json");
   CHECK(r.status == 0);
   CHECK(r.out.find("\"genus\": 0") != std::string::npos);
   CHECK(r.out.find("\"boundary_loops\": 1") != std::string::npos);
   // A bad input with --delaunay: the existing output file must survive untouched.
   const auto out = writeFile("keep.ply", "precious");
   const auto bad = writeFile("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n");
-  const Run rb = conformesh("info " + bad.string() + " --delaunay " + out.string());
+  const Run rb = cli("info " + bad.string() + " --delaunay " + out.string());
   CHECK(rb.status == 1);
   CHECK(slurp(out) == "precious");
 }

@@ -3,6 +3,8 @@
 // naming the family, the parameter or the field file's line.
 #include <catch2/catch.hpp>
 
+#include "../support/cli_runner.h"
+
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -22,34 +24,12 @@ using namespace conformesh::intrinsic;
 
 namespace {
 
-struct Run {
-  int status = -1;
-  std::string out, err;
-};
+using Run = conformesh::testing::CliRun;
+using conformesh::testing::slurp;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+fs::path dir() { return conformesh::testing::scratchDir(); }
 
-fs::path dir() {
-  const fs::path d = fs::temp_directory_path() / "conformesh_discretize_test";
-  fs::create_directories(d);
-  return d;
-}
-
-Run runCli(const std::string& args) {
-  const std::string cmd = "timeout 60 " + std::string(CONFORMESH_CLI) + " " + args + " >" + (dir() / "out").string() +
-                          " 2>" + (dir() / "err").string();
-  const int raw = std::system(cmd.c_str());
-  Run r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -WTERMSIG(raw);
-  r.out = slurp(dir() / "out");
-  r.err = slurp(dir() / "err");
-  return r;
-}
+Run runCli(const std::string& args) { return conformesh::testing::runConformesh(args); }
 
 }  // namespace
 
