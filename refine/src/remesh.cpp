@@ -193,10 +193,16 @@ RemeshResult remeshUniformized(const UniformizedMetric& prepared, const SmoothMe
     for (int v = 0; v < n1; ++v) out.positions[v] = metric.position(out.chart[v].x(), out.chart[v].y());
   }
 
-  // Output lengths: the metric length of each edge's curve (the reference-straight segment between its ends).
+  // Output lengths: the metric length of each edge's curve (the reference-straight segment between its ends). Output
+  // edges are short, so 6 Gauss–Legendre nodes per piece (exact for speeds of degree 11) with pieces halved until two
+  // sums agree to 1e-12 relative cost a few dozen metric evaluations per edge, ~100× below the errors measured. The
+  // edges are independent: shared among threads.
+  disc.gaussPoints = 6;
+  disc.lengthTolerance = 1e-12;
   out.mesh.mesh = m1;
   out.mesh.background = Background::Euclidean;
   out.mesh.edgeLengths.resize(m1.nEdges());
+#pragma omp parallel for schedule(dynamic, 256)
   for (int e = 0; e < m1.nEdges(); ++e) {
     const int h = m1.edgeHalfedge(e);
     const Eigen::Vector3d& xa = out.reference[m1.tail(h)];
