@@ -122,7 +122,7 @@ void registerRemeshCommand(CLI::App& app) {
   sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric (required)")->required();
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (default sqrt(2): 20.7 deg)");
   sub->add_flag("--uniform", a->uniform, "Ignore the conformal factor (uniform in the uniformized domain)");
-  sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of the initial triangulation T0 (default 32)");
+  sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of the initial triangulation T0 (default: automatic from eps, 8..32)");
   sub->add_option("-o,--output", a->output, "Output PLY (edge lengths, vertex fields)")->required();
   sub->add_option("--vtk", a->vtk, "Also write legacy VTK for ParaView");
   sub->add_flag("--json", a->json, "Print the report as JSON");

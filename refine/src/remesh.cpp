@@ -1,12 +1,14 @@
 // remesh.cpp — discretize → uniformize → refine → pull back, for a surface given by a smooth metric (remesh.h).
 #include "conformesh/refine/remesh.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "conformesh/intrinsic/curvature.h"
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/metric_quadrature.h"
 #include "conformesh/intrinsic/reference_surface.h"
 
 namespace conformesh::refine {
@@ -37,6 +39,18 @@ Eigen::Vector3d boundaryImage(const ChartDomain& d, const Eigen::Vector3d& xi, c
   return (1 - tau) * xi + tau * unwrapNear(d, xi, xj);
 }
 
+// Refinement only adds vertices, so T0 must be coarser than the output: aim T0 at about a quarter of the output's
+// expected size (area / (1.1 ε²) vertices, the density Delaunay refinement reaches; measured in
+// convergence_study.cpp), i.e. resolution √(N/40) for an icosahedral sphere chart (10 r² vertices), clamped to
+// [8, 32] so that the discrete conformal map stays accurate and the flow cheap.
+int automaticT0Resolution(const SmoothMetric& metric, double epsilon) {
+  if (!(epsilon > 0) || !std::isfinite(epsilon)) return 32;
+  QuadratureOptions q;
+  q.absoluteTolerance = q.relativeTolerance = 1e-6;
+  const double expected = metricArea(metric, q).value / (1.1 * epsilon * epsilon);
+  return std::clamp(static_cast<int>(std::lround(std::sqrt(expected / 40))), 8, 32);
+}
+
 }  // namespace
 
 UniformizedMetric uniformizeMetric(const SmoothMetric& metric, const RemeshOptions& options) {
@@ -49,7 +63,7 @@ UniformizedMetric uniformizeMetric(const SmoothMetric& metric, const RemeshOptio
   // === 1. discretize: T0 with chart coordinates per vertex
   auto t = std::chrono::steady_clock::now();
   DiscretizationOptions disc = options.discretization;
-  disc.resolution = options.t0Resolution > 0 ? options.t0Resolution : 32;
+  disc.resolution = options.t0Resolution > 0 ? options.t0Resolution : automaticT0Resolution(metric, options.epsilon);
   say("discretizing " + metric.description() + " at resolution " + std::to_string(disc.resolution));
   const MeshData t0Data = discretizeMetric(metric, disc);
   ConversionReport conversion;

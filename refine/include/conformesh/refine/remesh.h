@@ -31,7 +31,8 @@ struct RemeshOptions {
   bool uniform = false;
   // T0: resolution of the discretization of the chart (DiscretizationOptions::resolution); the discrete conformal map
   // of T0 is the only approximation of the smooth one, so it should be fine enough that its angle distortion is well
-  // below the refinement's angle bound. 0 = automatic: 32 (≈ 10⁴ vertices for sphere charts).
+  // below the refinement's angle bound. 0 = automatic: about a quarter of the output's expected vertex count, between
+  // 8 and 32 (≈ 650 to 10⁴ vertices for sphere charts), since refinement only adds vertices to T0.
   int t0Resolution = 0;
   intrinsic::DiscretizationOptions discretization;
   intrinsic::UniformizationOptions uniformization;
