@@ -125,9 +125,9 @@ void run(const DiscretizeArgs& a) {
 
 void registerDiscretizeCommand(CLI::App& app) {
   auto args = std::make_shared<DiscretizeArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "discretize",
-      "Discretize a smooth metric into T0: a well-shaped triangulation of its chart whose edge lengths are metric\n"
+  CLI::App* sub = app.add_subcommand("discretize", "Discretize a smooth metric into T0, the initial triangulation");
+  sub->footer(
+      "T0 is a well-shaped triangulation of the metric's chart whose edge lengths are metric\n"
       "lengths (the exact geodesic distance where the family knows it: sphere, ellipsoid via GeographicLib's\n"
       "GeodesicExact, spherical cap, hyperbolic disk; otherwise the length of the edge's chart curve by adaptive\n"
       "Gauss-Legendre). Spheres are icosahedral (no pole fans), disks hexagonal rings, tori glued periodic grids.\n"

@@ -145,9 +145,8 @@ std::complex<double> toComplex(const std::vector<double>& v) {
 
 void registerGenerateCommand(CLI::App& app) {
   auto args = std::make_shared<GenerateArgs>();
-  CLI::App* gen = app.add_subcommand(
-      "generate",
-      "Write a test surface with known answers.\n"
+  CLI::App* gen = app.add_subcommand("generate", "Write a test surface with known answers (sphere, torus, genus g, ...)");
+  gen->footer(
       "Each surface is a subcommand with its own --help. For every surface the summary reports the measured V, E, F,\n"
       "Euler characteristic χ = V − E + F, genus and number of boundary loops, next to the known χ, the total\n"
       "Gaussian curvature 2πχ (Gauss–Bonnet: angle deficits plus boundary turning must add up to it to round-off)\n"

@@ -142,8 +142,8 @@ void run(const RefineArgs& args) {
 void registerRefineCommand(CLI::App& app) {
   auto args = std::make_shared<RefineArgs>();
   CLI::App* sub = app.add_subcommand(
-      "refine",
-      "Delaunay refinement of a constant-curvature triangulation (paper §4.2), graded by the conformal factor.\n"
+      "refine", "Delaunay refinement of a constant-curvature triangulation (paper §4.2), graded by the conformal factor");
+  sub->footer(
       "The input is a uniformized triangulation T0* (edge lengths in its background geometry: euclidean for flat\n"
       "tori, disks and circle domains, spherical for the unit sphere, hyperbolic for genus >= 2). Bad triangles are\n"
       "split at their circumcentres, found by tracing geodesics across triangles (no layout of the surface), and\n"
