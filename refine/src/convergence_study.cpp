@@ -15,25 +15,6 @@ std::vector<int> paperTable2Vertices() {
   return {1021, 2045, 4093, 6141, 8189, 10237, 12285, 14333, 16381, 18429, 21876};
 }
 
-double fitLogLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
-  if (x.size() != y.size() || x.size() < 2)
-    throw InputError("log-log fit: need at least two (x, y) pairs of equal count, found " + std::to_string(x.size()) +
-                     " and " + std::to_string(y.size()));
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    if (!(x[i] > 0) || !(y[i] > 0))
-      throw InputError("log-log fit: point " + std::to_string(i) + " (" + std::to_string(x[i]) + ", " +
-                       std::to_string(y[i]) + ") is not positive");
-    const double lx = std::log(x[i]), ly = std::log(y[i]);
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-  }
-  const double n = static_cast<double>(x.size());
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 ConvergenceStudy runConvergenceStudy(const SmoothMetric& metric, const ConvergenceOptions& options) {
   if (options.targetVertices.size() < 2)
     throw InputError("convergence: give at least two target vertex counts to fit an order");

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "conformesh/intrinsic/convergence_order.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/metric_discretization.h"
@@ -35,18 +36,6 @@ Discretized discretize(const SmoothMetric& m, int resolution) {
 }
 
 // Least-squares slope of log y against log x.
-double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(x.size());
-  for (size_t i = 0; i < x.size(); ++i) {
-    const double lx = std::log(x[i]), ly = std::log(y[i]);
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 }  // namespace
 
@@ -93,9 +82,9 @@ TEST_CASE("the Gaussian curvature measure converges at first order, with the ord
       o.region = MeasureRegion::TriangleUnion;
       triangles.push_back(gaussianCurvatureMeasure(d.tri, d.reference, *m, o).meanAbsoluteError);
     }
-    const double slope = logLogSlope(h, ball);
+    const double slope = fitLogLogSlope(h, ball);
     INFO(m->description() << ": geodesic balls, fitted order " << slope << ", e_G " << ball.front() << " .. "
-                          << ball.back() << "; triangle unions, order " << logLogSlope(h, triangles));
+                          << ball.back() << "; triangle unions, order " << fitLogLogSlope(h, triangles));
     CHECK(slope >= 0.9);
     // Triangle unions carry the one-sided rim term of Theorem 3.4: still decreasing, at a lower pre-asymptotic order.
     for (size_t i = 1; i < triangles.size(); ++i) CHECK(triangles[i] < triangles[i - 1]);

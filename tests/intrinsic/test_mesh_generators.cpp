@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
+#include "conformesh/intrinsic/convergence_order.h"
 #include "conformesh/intrinsic/curvature.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh_data.h"
@@ -67,20 +68,6 @@ double meanEdgeLength(const IntrinsicTriangulation& tri) {
 }
 
 // Least-squares slope of log y against log x.
-double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
-  const std::size_t n = x.size();
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    mx += std::log(x[i]) / n;
-    my += std::log(y[i]) / n;
-  }
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
-    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
-  }
-  return sxy / sxx;
-}
 
 // Signed area of face f projected to the xy-plane (planar generators must be counter-clockwise: all positive).
 double signedAreaXY(const MeshData& d, int f) {
@@ -145,7 +132,7 @@ TEST_CASE("icosphere: area converges to 4πR² at order 2 in the edge length", "
     h.push_back(meanEdgeLength(tri));
     err.push_back(exact - area);
   }
-  const double order = logLogSlope(h, err);
+  const double order = fitLogLogSlope(h, err);
   CAPTURE(order);
   REQUIRE(std::abs(order - 2) < 0.05);
 }
@@ -220,7 +207,7 @@ TEST_CASE("torus: area converges to 4π²Rr at order 2", "[torus][convergence]")
     h.push_back(meanEdgeLength(tri));
     err.push_back(std::abs(exact - totalArea(tri)));
   }
-  const double order = logLogSlope(h, err);
+  const double order = fitLogLogSlope(h, err);
   CAPTURE(order);
   REQUIRE(std::abs(order - 2) < 0.05);
 }
@@ -407,7 +394,7 @@ TEST_CASE("disk: area converges to πR² at order 2", "[disk][convergence]") {
     h.push_back(meanEdgeLength(tri));
     err.push_back(kPi - totalArea(tri));
   }
-  const double order = logLogSlope(h, err);
+  const double order = fitLogLogSlope(h, err);
   CAPTURE(order);
   REQUIRE(std::abs(order - 2) < 0.05);
 }
@@ -448,7 +435,7 @@ TEST_CASE("annulus: counts, two boundary loops, angle bound, exact and convergin
       h.push_back(meanEdgeLength(tri));
       err.push_back(kPi * (r2 * r2 - r1 * r1) - totalArea(tri));
     }
-    const double order = logLogSlope(h, err);
+    const double order = fitLogLogSlope(h, err);
     CAPTURE(r1, order);
     REQUIRE(std::abs(order - 2) < 0.1);
   }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "conformesh/intrinsic/convergence_order.h"
 #include "conformesh/intrinsic/curvature.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric_discretization.h"
@@ -17,16 +18,6 @@ using namespace conformesh;
 using namespace conformesh::intrinsic;
 
 namespace {
-
-double slope(const std::vector<double>& h, const std::vector<double>& err) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = h.size();
-  for (size_t i = 0; i < h.size(); ++i) {
-    const double x = std::log(h[i]), y = std::log(err[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 struct Built {
   MeshData data;
@@ -61,7 +52,7 @@ double areaOrder(const SmoothMetric& m, double exactArea, const std::vector<int>
     std::cout << m.description() << " N=" << N << " V=" << b.report.vertices << " area rel.err=" << err.back()
               << " min angle=" << b.report.minAngle * 180 / M_PI << " deg\n";
   }
-  const double p = slope(h, err);
+  const double p = fitLogLogSlope(h, err);
   std::cout << m.description() << ": area order " << p << "\n";
   return p;
 }
@@ -101,7 +92,7 @@ TEST_CASE("ellipsoid: chart-curve lengths converge to GeodesicExact at relative 
       // The conformal chart keeps triangles well shaped even at f = 0.9 (b = a/10).
       CHECK(b.report.minAngle > 40 * M_PI / 180);
     }
-    const double p = slope(h, err);
+    const double p = fitLogLogSlope(h, err);
     std::cout << e.description() << ": edge-length order " << p << "\n";
     CHECK(p == Approx(2).margin(0.25));
     CHECK(areaOrder(e, e.area(), {4, 8, 16, 32}, 2, 0) == Approx(2).margin(0.15));

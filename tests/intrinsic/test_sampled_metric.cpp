@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "conformesh/intrinsic/convergence_order.h"
 #include "conformesh/intrinsic/curvature.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric_discretization.h"
@@ -26,15 +27,6 @@ double kerrCapCurvature(const KerrNewmanMetric& k, double a, double thetaC) {
   return 2 * M_PI * (1 - s * s * std::cos(thetaC) / (rho2 * rho2));
 }
 
-double slope(const std::vector<double>& h, const std::vector<double>& err) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = h.size();
-  for (size_t i = 0; i < h.size(); ++i) {
-    const double x = std::log(h[i]), y = std::log(err[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 const char* kGood =
     "conformesh-metric-field 1\n"
@@ -72,7 +64,7 @@ TEST_CASE("sampled Kerr horizon (64 x 128): polar-cap curvature to the accuracy 
     std::cout << "sampled kerr a=0.95 grid " << 2 * nv << " x " << nv << ": max |cap integral error| = " << worst
               << "\n";
   }
-  const double p = slope(h, err);
+  const double p = fitLogLogSlope(h, err);
   std::cout << "sampled kerr: cap-curvature order " << p << "\n";
   // K uses second derivatives of a cubic spline: second order at least.
   CHECK(p > 1.8);

@@ -13,13 +13,6 @@ using namespace conformesh;
 using namespace conformesh::intrinsic;
 using namespace conformesh::refine;
 
-TEST_CASE("log–log fits recover exact power laws") {
-  std::vector<double> x = {1, 2, 4, 8}, y;
-  for (double xi : x) y.push_back(3 * std::pow(xi, -1.5));
-  CHECK(fitLogLogSlope(x, y) == Approx(-1.5).epsilon(1e-12));
-  REQUIRE_THROWS_WITH(fitLogLogSlope({1, 0}, {1, 1}), Catch::Contains("point 1"));
-}
-
 TEST_CASE("convergence sweeps on the ellipsoid and the Kerr horizon at a/M = 0.95") {
   for (const auto& [name, params] : {std::pair<std::string, std::map<std::string, double>>{"ellipsoid", {{"f", 0.3}}},
                                     {"kerr-newman", {{"a", 0.95}}}}) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "conformesh/intrinsic/convergence_order.h"
 #include "conformesh/intrinsic/gaussian_curvature_measure.h"
 #include "conformesh/refine/remesh.h"
 
@@ -56,9 +57,5 @@ struct ConvergenceStudy {
 };
 
 ConvergenceStudy runConvergenceStudy(const intrinsic::SmoothMetric& metric, const ConvergenceOptions& options = {});
-
-// Least-squares slope of log y against log x (all values must be positive; throws InputError naming the first that
-// is not).
-double fitLogLogSlope(const std::vector<double>& x, const std::vector<double>& y);
 
 }  // namespace conformesh::refine
