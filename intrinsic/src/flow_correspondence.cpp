@@ -70,6 +70,14 @@ struct Buckets {
   explicit Buckets(int nFaces, const std::vector<FacePoint>& pts) : of(nFaces) {
     for (std::size_t i = 0; i < pts.size(); ++i) of[pts[i].face].push_back(static_cast<int>(i));
   }
+  // Moves the points of the flip's two faces into `moving` (they are about to change faces).
+  void take(const PtolemyFlip& q, std::vector<int>& moving) {
+    moving.clear();
+    moving.insert(moving.end(), of[q.faceA].begin(), of[q.faceA].end());
+    moving.insert(moving.end(), of[q.faceB].begin(), of[q.faceB].end());
+    of[q.faceA].clear();
+    of[q.faceB].clear();
+  }
 };
 
 // Rescales barycentric coordinates between decorations: c_ij = e^{(w_i+w_j)/2} c⁰_ij means p_i = e^{w_i} p⁰_i
@@ -98,11 +106,7 @@ std::vector<FacePoint> FlowCorrespondence::mapToInput(const HalfedgeMesh& unifor
     if (buckets.of[q.faceA].empty() && buckets.of[q.faceB].empty()) continue;
     double alpha, beta, gamma;
     quadRelation(q, alpha, beta, gamma);
-    moving.clear();
-    moving.insert(moving.end(), buckets.of[q.faceA].begin(), buckets.of[q.faceA].end());
-    moving.insert(moving.end(), buckets.of[q.faceB].begin(), buckets.of[q.faceB].end());
-    buckets.of[q.faceA].clear();
-    buckets.of[q.faceB].clear();
+    buckets.take(q, moving);
     for (int i : moving) {
       FacePoint& p = pts[i];
       // Post-flip coefficients on p_a, p_b, p_c, p_d: fa = (d, c, a), fb = (c, d, b).
@@ -157,11 +161,7 @@ std::vector<FacePoint> FlowCorrespondence::mapToUniform(const HalfedgeMesh& unif
     // by eliminating p_b or p_a from the same linear relation of the quad.
     double alpha, beta, gamma;
     quadRelation(q, alpha, beta, gamma);
-    moving.clear();
-    moving.insert(moving.end(), buckets.of[q.faceA].begin(), buckets.of[q.faceA].end());
-    moving.insert(moving.end(), buckets.of[q.faceB].begin(), buckets.of[q.faceB].end());
-    buckets.of[q.faceA].clear();
-    buckets.of[q.faceB].clear();
+    buckets.take(q, moving);
     for (int i : moving) {
       FacePoint& p = pts[i];
       double Ka = 0, Kb = 0, Kc = 0, Kd = 0;

@@ -71,12 +71,14 @@ void accumulate(UniformizationReport& report, const RicciFlowReport& flow) {
   report.effectiveTolerance = flow.effectiveTolerance;
 }
 
-// Vertex scaling multiplies lengths by e^{(w_i+w_j)/2}, i.e. by e^{w} where w is constant: the uniform metric is
-// e^{2w} × the original, so the original is e^{2λ} × the uniform one with λ = −w.
-std::vector<double> lambdaFromScale(const std::vector<double>& w) {
-  std::vector<double> lambda(w.size());
-  for (std::size_t i = 0; i < w.size(); ++i) lambda[i] = -w[i];
-  return lambda;
+// Records the total vertex scaling w of the flow in `out`: the correspondence's log scale, and λ. Vertex scaling
+// multiplies lengths by e^{(w_i+w_j)/2}, i.e. by e^{w} where w is constant: the uniform metric is e^{2w} × the
+// original, so the original is e^{2λ} × the uniform one with λ = −w.
+void attachScale(Uniformization& out, const std::vector<double>& w, FlowCorrespondence& log) {
+  out.lambda.resize(w.size());
+  for (std::size_t i = 0; i < w.size(); ++i) out.lambda[i] = -w[i];
+  log.logScale = w;
+  out.correspondence = std::move(log);
 }
 
 // === circle domains (genus 0 with boundary)
@@ -123,9 +125,7 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
 
   Uniformization out;
   out.uniform = metric.triangulation();
-  out.lambda = lambdaFromScale(metric.u());
-  log.logScale = metric.u();
-  out.correspondence = std::move(log);
+  attachScale(out, metric.u(), log);
   const std::vector<Eigen::Vector2d> planar = layoutFlat(out.uniform);
   // Centre the outer circle at the origin: circumcentre of three well-spread outer vertices.
   const std::vector<int>& tips = loopTips[outer];
@@ -173,9 +173,7 @@ Uniformization uniformizeConstant(const IntrinsicTriangulation& input, const Uni
   }
   Uniformization out;
   out.uniform = metric.triangulation();
-  out.lambda = lambdaFromScale(metric.u());
-  log.logScale = metric.u();
-  out.correspondence = std::move(log);
+  attachScale(out, metric.u(), log);
   out.report = report;
   return out;
 }
@@ -450,9 +448,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
 
   out.uniform = std::move(sphere);
   out.positions = x;
-  out.lambda = lambdaFromScale(w);
-  log.logScale = w;
-  out.correspondence = std::move(log);
+  attachScale(out, w, log);
   return {true, ""};
 }
 
