@@ -9,6 +9,7 @@
 
 #include <Eigen/Geometry>
 
+#include "conformesh/intrinsic/convergence_order.h"
 #include "conformesh/intrinsic/curvature.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric_discretization.h"
@@ -69,7 +70,7 @@ TEST_CASE("teapot patch metric: area against a fine 3-D triangulation, K consist
 TEST_CASE("teapot patch T0: grid of the rectangle, area at second order, Gauss-Bonnet") {
   auto m = makeTeapotPatch(4);
   const double area = metricArea(*m).value;
-  std::vector<double> lh, le;
+  std::vector<double> hs, errors;
   for (int N : {4, 8, 16, 32}) {
     DiscretizationOptions o;
     o.resolution = N;
@@ -77,15 +78,12 @@ TEST_CASE("teapot patch T0: grid of the rectangle, area at second order, Gauss-B
     const IntrinsicTriangulation tri = toTriangulation(discretizeMetric(*m, o, &rep));
     CHECK(tri.mesh.eulerCharacteristic() == 1);
     CHECK(std::abs(curvatureTotals(tri).gaussBonnetResidual) < 1e-10);
-    lh.push_back(std::log(1.0 / N));
-    le.push_back(std::log(std::abs(totalArea(tri) - area) / area));
-    std::cout << "teapot patch 4 N=" << N << " V=" << rep.vertices << " area rel.err=" << std::exp(le.back())
+    hs.push_back(1.0 / N);
+    errors.push_back(std::abs(totalArea(tri) - area) / area);
+    std::cout << "teapot patch 4 N=" << N << " V=" << rep.vertices << " area rel.err=" << errors.back()
               << " min angle " << rep.minAngle * 180 / M_PI << " deg\n";
   }
-  const double n = lh.size();
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (size_t i = 0; i < lh.size(); ++i) sx += lh[i], sy += le[i], sxx += lh[i] * lh[i], sxy += lh[i] * le[i];
-  const double order = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  const double order = fitLogLogSlope(hs, errors);
   std::cout << "teapot patch 4: area order " << order << "\n";
   CHECK(order == Approx(2).margin(0.2));
 }
