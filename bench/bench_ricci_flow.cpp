@@ -1,6 +1,7 @@
-// bench_ricci_flow.cpp — time, Newton steps, flips and peak memory of `uniformize` on closed genus-0, genus-1 and
-// genus-2 surfaces at ~10k, ~100k and ~1M vertices (generated: box surface → sphere, torus of revolution → flat torus,
-// genus-2 slab → hyperbolic). Run one case per process for a meaningful peak RSS; docs/benchmarks.md has the command.
+// bench_ricci_flow.cpp — time, Newton steps, Cholesky factorizations, flips and peak memory of `uniformize` on closed
+// genus-0, genus-1 and genus-2 surfaces at ~10k, ~100k and ~1M vertices (generated: box surface → sphere, torus of
+// revolution → flat torus, genus-2 slab → hyperbolic). Run one case per process for a meaningful peak RSS;
+// docs/benchmarks.md has the command.
 #include <benchmark/benchmark.h>
 
 #include <sys/resource.h>
@@ -42,6 +43,8 @@ void BM_Uniformize(benchmark::State& state) {
   state.counters["vertices"] = tri.mesh.nVertices();
   state.counters["newton_steps"] = u.report.newtonSteps;
   state.counters["flips"] = static_cast<double>(u.report.flips);
+  state.counters["factorizations"] = u.report.factorizations;
+  state.counters["cg_iterations"] = u.report.cgIterations;
   state.counters["residual"] = u.report.maxResidual;
   state.counters["peak_MB"] = usage.ru_maxrss / 1024.0;
 }

@@ -73,10 +73,14 @@ std::int64_t DiscreteConformalMetric::makeDelaunay(double tolerance, FlowCorresp
   };
   // Margin at the current u from reference lengths: the scale factors cancel in each of the two ratios except through
   // the vertex weights, so apply them explicitly.
+  // u does not change while flipping: one exponential per vertex, c_ij = c⁰_ij e^{u_i/2} e^{u_j/2}.
+  std::vector<double> half(u_.size());
+  for (std::size_t v = 0; v < u_.size(); ++v) half[v] = std::exp(0.5 * u_[v]);
+  auto current = [&](int h) { return tri_.edgeLengths[m.edge(h)] * half[m.tail(h)] * half[m.tip(h)]; };
   auto margin = [&](int e) {
     const int h = m.edgeHalfedge(e), t = m.twin(h);
-    return pennerDelaunayMargin(penner(e), penner(m.edge(HalfedgeMesh::next(h))), penner(m.edge(HalfedgeMesh::prev(h))),
-                                penner(m.edge(HalfedgeMesh::next(t))), penner(m.edge(HalfedgeMesh::prev(t))));
+    return pennerDelaunayMargin(current(h), current(HalfedgeMesh::next(h)), current(HalfedgeMesh::prev(h)),
+                                current(HalfedgeMesh::next(t)), current(HalfedgeMesh::prev(t)));
   };
   std::vector<int> stack;
   std::vector<char> queued(nE, 0);

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 #include "conformesh/intrinsic/errors.h"
@@ -21,27 +22,77 @@ namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-// The three side lengths and angles of face f in the current metric: L[k] is opposite corner k. A face violating the
+// The three side lengths, angles and angle cotangents of a face: L[k] is opposite corner k. A face violating the
 // triangle inequality gets the angles (π, 0, 0), π opposite its longest side: the continuous extension of the angles
 // that makes the energy C¹ and convex on all of u-space (Luo; Bobenko–Pinkall–Springborn 2015, §4). Such faces only
 // occur next to unflippable (boundary, frozen) edges; interior ones are repaired by the Ptolemy flips.
 struct FaceGeometry {
-  double L[3], theta[3];
+  double L[3], theta[3], cot[3];
   bool degenerate = false;
 };
 
-FaceGeometry faceGeometry(const DiscreteConformalMetric& metric, int f) {
-  const HalfedgeMesh& m = metric.mesh();
+// The half-angle formulas of triangle_geometry.h (tan(θ_k/2) = sqrt(f(s−L_{k+1}) f(s−L_{k+2}) / (f(s) f(s−L_k))), f =
+// identity, sin or sinh) evaluated once per face for all three corners — the same numbers as angleOpposite and
+// cotOpposite (isValidTriangle's test), at a quarter of the cost: every Newton step and every line-search trial
+// evaluates all faces, and this is most of the flow's non-factorization time.
+FaceGeometry faceGeometry(Background bg, double L0, double L1, double L2) {
   FaceGeometry g;
-  for (int k = 0; k < 3; ++k) g.L[k] = metric.length(m.edge(3 * f + (k + 1) % 3));
-  if (!isValidTriangle(metric.geometry(), g.L[0], g.L[1], g.L[2])) {
+  g.L[0] = L0;
+  g.L[1] = L1;
+  g.L[2] = L2;
+  const HalfPerimeter p = halfPerimeter(L0, L1, L2);
+  const bool valid = std::isfinite(L0) && std::isfinite(L1) && std::isfinite(L2) && L0 > 0 && L1 > 0 && L2 > 0 &&
+                     p.sa > 0 && p.sb > 0 && p.sc > 0 && (bg != Background::Spherical || p.s < M_PI);
+  if (!valid) {
     g.degenerate = true;
-    const int longest = g.L[0] >= g.L[1] ? (g.L[0] >= g.L[2] ? 0 : 2) : (g.L[1] >= g.L[2] ? 1 : 2);
-    for (int k = 0; k < 3; ++k) g.theta[k] = k == longest ? M_PI : 0.0;
+    const int longest = L0 >= L1 ? (L0 >= L2 ? 0 : 2) : (L1 >= L2 ? 1 : 2);
+    for (int k = 0; k < 3; ++k) {
+      g.theta[k] = k == longest ? M_PI : 0.0;
+      g.cot[k] = 0;
+    }
     return g;
   }
-  for (int k = 0; k < 3; ++k) g.theta[k] = angleOpposite(metric.geometry(), g.L[k], g.L[(k + 1) % 3], g.L[(k + 2) % 3]);
+  auto f = [bg](double x) {
+    return bg == Background::Euclidean ? x : (bg == Background::Hyperbolic ? std::sinh(x) : std::sin(x));
+  };
+  const double fs = f(p.s), fd[3] = {f(p.sa), f(p.sb), f(p.sc)};
+  for (int k = 0; k < 3; ++k) {
+    const double num = fd[(k + 1) % 3] * fd[(k + 2) % 3], den = fs * fd[k];
+    g.theta[k] = 2.0 * std::atan2(std::sqrt(num), std::sqrt(den));
+    g.cot[k] = (den - num) / (2.0 * std::sqrt(num * den));
+  }
   return g;
+}
+
+// Current background length of every edge: ℓ(e^{(u_i+u_j)/2} c⁰_ij), with one exponential per vertex.
+void currentLengths(const DiscreteConformalMetric& metric, std::vector<double>& length) {
+  const HalfedgeMesh& m = metric.mesh();
+  std::vector<double> half(metric.nVertices());
+  for (int v = 0; v < metric.nVertices(); ++v) half[v] = std::exp(0.5 * metric.u()[v]);
+  length.resize(m.nEdges());
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e);
+    length[e] = lengthFromPenner(metric.geometry(), metric.referencePenner(e) * half[m.tail(h)] * half[m.tip(h)]);
+  }
+}
+
+FaceGeometry faceGeometry(const DiscreteConformalMetric& metric, const std::vector<double>& length, int f) {
+  const HalfedgeMesh& m = metric.mesh();
+  return faceGeometry(metric.geometry(), length[m.edge(3 * f + 1)], length[m.edge(3 * f + 2)], length[m.edge(3 * f)]);
+}
+
+// Angle sums over the non-frozen faces, and each face's geometry (for the Jacobian at the same point).
+void evaluateFaces(const DiscreteConformalMetric& metric, std::vector<double>& length, std::vector<double>& sums,
+                   std::vector<FaceGeometry>& faces) {
+  const HalfedgeMesh& m = metric.mesh();
+  currentLengths(metric, length);
+  sums.assign(m.nVertices(), 0.0);
+  faces.resize(m.nFaces());
+  for (int f = 0; f < m.nFaces(); ++f) {
+    if (metric.isFrozen(f)) continue;
+    faces[f] = faceGeometry(metric, length, f);
+    for (int k = 0; k < 3; ++k) sums[m.faceVertex(f, k)] += faces[f].theta[k];
+  }
 }
 
 double sineLike(Background bg, double x) {
@@ -49,8 +100,7 @@ double sineLike(Background bg, double x) {
 }
 
 // J[k][j] = ∂θ_k/∂u_{v_j} for the corners of face f.
-void angleJacobian(const DiscreteConformalMetric& metric, int f, const FaceGeometry& g, double J[3][3]) {
-  const Background bg = metric.geometry();
+void angleJacobian(Background bg, const FaceGeometry& g, double J[3][3]) {
   if (g.degenerate) {  // the extended angles are locally constant
     for (int k = 0; k < 3; ++k)
       for (int j = 0; j < 3; ++j) J[k][j] = 0;
@@ -58,17 +108,14 @@ void angleJacobian(const DiscreteConformalMetric& metric, int f, const FaceGeome
   }
   if (bg == Background::Euclidean) {
     // Springborn–Schröder–Pinkall 2008: ∂θ_k/∂u_j = ½ cot θ_l for the third corner l, ∂θ_k/∂u_k = −Σ of those.
-    double cot[3];
-    for (int k = 0; k < 3; ++k) cot[k] = cotOpposite(bg, g.L[k], g.L[(k + 1) % 3], g.L[(k + 2) % 3]);
     for (int k = 0; k < 3; ++k) {
       const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-      J[k][k1] = 0.5 * cot[k2];
-      J[k][k2] = 0.5 * cot[k1];
+      J[k][k1] = 0.5 * g.cot[k2];
+      J[k][k2] = 0.5 * g.cot[k1];
       J[k][k] = -J[k][k1] - J[k][k2];
     }
     return;
   }
-  (void)f;
   // General background: dθ_k = A_k (dL_k − cos θ_{k+2} dL_{k+1} − cos θ_{k+1} dL_{k+2}),
   // A_k = S(L_k)/(S(L_{k+1}) S(L_{k+2}) sin θ_k), and dL_k = D_k (du_{k+1} + du_{k+2}).
   double D[3];
@@ -85,6 +132,73 @@ void angleJacobian(const DiscreteConformalMetric& metric, int f, const FaceGeome
 }
 
 }  // namespace
+
+// === the symmetric Newton systems
+
+// H δ = b for the symmetric positive definite Hessian (lower triangle stored). A sparse Cholesky factorization costs
+// O(n^1.5) flops on these planar-graph Laplacians (≈ 0.4 s at 10⁵, ≈ 10 s at 10⁶ unknowns with the installed BLAS),
+// a solve with the factor O(n log n) (≈ 0.02 s at 10⁵). Between consecutive Newton steps H changes by O(|δ|) (and by
+// the few rows a flip touches), so the previous factor is an excellent preconditioner: conjugate gradients with it
+// converge in a handful of iterations, and a new factorization is only computed when they do not reach the requested
+// relative residual within `maxIterations` (then the factor is refreshed and the solve is direct). The sparsity
+// analysis is redone only when flips changed the pattern. Consecutive solves may share it (RicciFlowOptions::
+// solverCache) when their unknowns keep their number.
+class FlowSolverCache {
+ public:
+  explicit FlowSolverCache(int maxIterations) : maxIterations_(maxIterations) {}
+  void patternChanged() { patternValid_ = false; }
+  // A factor of another dimension cannot precondition: forget it.
+  void setDimension(int n) {
+    if (n != dimension_) haveFactor_ = patternValid_ = false;
+    dimension_ = n;
+  }
+  int factorizations() const { return factorizations_; }
+  int cgIterations() const { return cgIterations_; }
+
+  // Returns false when the factorization fails (H not positive definite).
+  bool solve(const SparseMatrix& H, const Eigen::VectorXd& b, double relativeTolerance, Eigen::VectorXd& x) {
+    if (haveFactor_ && maxIterations_ > 0 && preconditionedCG(H, b, relativeTolerance, x)) return true;
+    if (!patternValid_) {
+      solver_.analyzePattern(H);
+      patternValid_ = true;
+    }
+    solver_.factorize(H);
+    ++factorizations_;
+    haveFactor_ = solver_.info() == Eigen::Success;
+    if (!haveFactor_) return false;
+    x = solver_.solve(b);
+    return true;
+  }
+
+ private:
+  bool preconditionedCG(const SparseMatrix& H, const Eigen::VectorXd& b, double relativeTolerance, Eigen::VectorXd& x) {
+    const double bound = relativeTolerance * b.norm();
+    x.setZero(b.size());
+    Eigen::VectorXd r = b, z = solver_.solve(r), p = z, q;
+    double rz = r.dot(z);
+    for (int it = 1; it <= maxIterations_; ++it) {
+      q = H.selfadjointView<Eigen::Lower>() * p;
+      const double pq = p.dot(q);
+      if (!(pq > 0)) return false;
+      const double alpha = rz / pq;
+      x += alpha * p;
+      r -= alpha * q;
+      ++cgIterations_;
+      if (r.norm() <= bound) return true;
+      z = solver_.solve(r);
+      const double rzNew = r.dot(z);
+      p = z + (rzNew / rz) * p;
+      rz = rzNew;
+    }
+    return false;
+  }
+
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> solver_;
+  int maxIterations_;
+  int dimension_ = -1;
+  bool patternValid_ = false, haveFactor_ = false;
+  int factorizations_ = 0, cgIterations_ = 0;
+};
 
 InscribedPolygon inscribedPolygon(const std::vector<double>& sides, int loop) {
   const int n = static_cast<int>(sides.size());
@@ -145,14 +259,14 @@ InscribedPolygon inscribedPolygon(const std::vector<double>& sides, int loop) {
   return out;
 }
 
+std::shared_ptr<FlowSolverCache> makeFlowSolverCache(int maxReuseIterations) {
+  return std::make_shared<FlowSolverCache>(maxReuseIterations);
+}
+
 std::vector<double> flowAngleSums(const DiscreteConformalMetric& metric) {
-  const HalfedgeMesh& m = metric.mesh();
-  std::vector<double> sums(m.nVertices(), 0.0);
-  for (int f = 0; f < m.nFaces(); ++f) {
-    if (metric.isFrozen(f)) continue;
-    const FaceGeometry g = faceGeometry(metric, f);
-    for (int k = 0; k < 3; ++k) sums[m.faceVertex(f, k)] += g.theta[k];
-  }
+  std::vector<double> length, sums;
+  std::vector<FaceGeometry> faces;
+  evaluateFaces(metric, length, sums, faces);
   return sums;
 }
 
@@ -237,17 +351,24 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
   RicciFlowReport report;
   std::vector<int> index(nV, -1);
   std::vector<int> unknowns;
+  // With a shared solver cache the Dirichlet vertices of active faces stay unknowns with the equation δ_v = 0 (an
+  // identity row), so that the dimension — and with it the cached factor — survives changes of the Dirichlet set.
+  const bool shared = options.solverCache != nullptr && !circles;
+  std::vector<char> identityRow;
+  std::vector<int> equations;  // vertices whose residual is checked
   for (int v = 0; v < nV; ++v)
-    if (!isFixed(v) && inActiveFace[v]) {
+    if (inActiveFace[v] && (!isFixed(v) || shared)) {
       index[v] = static_cast<int>(unknowns.size());
       unknowns.push_back(v);
+      identityRow.push_back(isFixed(v));
+      if (!isFixed(v)) equations.push_back(v);
     }
-  std::vector<int> equations = unknowns;  // vertices whose residual is checked
   if (bg == Background::Euclidean && !anyFixed && !unknowns.empty()) {
     // Prefer an interior vertex: circle vertices may carry the Möbius gauge rows below.
     auto pin = std::find_if(unknowns.begin(), unknowns.end(), [&](int v) { return !onCircle[v]; });
     if (pin == unknowns.end()) pin = unknowns.begin();
     index[*pin] = -1;
+    identityRow.erase(identityRow.begin() + (pin - unknowns.begin()));
     unknowns.erase(pin);
     for (std::size_t i = 0; i < unknowns.size(); ++i) index[unknowns[i]] = static_cast<int>(i);
     report.gaugeFixed = true;
@@ -256,7 +377,7 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
   report.effectiveTolerance = std::max(options.tolerance, options.relativeFloor * std::sqrt(double(nV)));
 
   // Residual r_v = Θ̂_v − Θ_v on `equations`; returns max |r| and fills the unknowns' part and |r|².
-  Eigen::VectorXd r(n);
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
   // Circle loops: current sides, radius, and the targets of their vertices.
   std::vector<std::vector<double>> loopSides(target.circleLoops.size());
   std::vector<InscribedPolygon> loopPolygons(target.circleLoops.size());
@@ -311,6 +432,9 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
   bool gaugeOn = false;
   int row0 = -1, row1 = -1;  // the active gauge rows (−1 while off)
   std::string circleFailure;
+  // The last evaluation: edge lengths, angle sums and face geometry at the current u (the Jacobian's point).
+  std::vector<double> lengths, sums;
+  std::vector<FaceGeometry> faces;
   auto residual = [&](double& maxAbs, double& norm2) {
     if (circles) {
       // A trial step can make a short loop uninscribable (one side longer than the rest): an infinite merit rejects
@@ -323,7 +447,7 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
         return;
       }
     }
-    const std::vector<double> sums = flowAngleSums(metric);
+    evaluateFaces(metric, lengths, sums, faces);
     maxAbs = 0;
     norm2 = 0;
     for (int v : equations) {
@@ -343,6 +467,12 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
     norm2 = r.squaredNorm();
   };
 
+  auto anyDegenerateFace = [&]() {
+    for (int f = 0; f < m.nFaces(); ++f)
+      if (!metric.isFrozen(f) && faces[f].degenerate) return true;
+    return false;
+  };
+
   report.flips += metric.makeDelaunay(options.delaunayTolerance, log);
   double maxAbs = 0, norm2 = 0;
   residual(maxAbs, norm2);
@@ -352,7 +482,10 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
         (circleFailure.empty() ? std::string("the initial angle sums are not finite") : circleFailure));
   report.maxResidual = maxAbs;
 
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> solver;
+  FlowSolverCache local(options.maxReuseIterations);
+  FlowSolverCache& solver = shared ? *options.solverCache : local;
+  solver.setDimension(n);
+  const int factorizationsBefore = solver.factorizations(), cgBefore = solver.cgIterations();
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
   std::vector<Eigen::Triplet<double>> triplets;
   bool patternValid = false;
@@ -378,11 +511,13 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
     triplets.reserve(9 * static_cast<std::size_t>(m.nFaces()));
     for (int f = 0; f < m.nFaces(); ++f) {
       if (metric.isFrozen(f)) continue;
-      const FaceGeometry g = faceGeometry(metric, f);
       double J[3][3];
-      angleJacobian(metric, f, g, J);
+      angleJacobian(bg, faces[f], J);
       int idx[3];
-      for (int k = 0; k < 3; ++k) idx[k] = index[m.faceVertex(f, k)];
+      for (int k = 0; k < 3; ++k) {
+        idx[k] = index[m.faceVertex(f, k)];
+        if (idx[k] >= 0 && identityRow[idx[k]]) idx[k] = -1;
+      }
       for (int k = 0; k < 3; ++k) {
         if (idx[k] < 0) continue;
         for (int j = 0; j < 3; ++j)
@@ -390,22 +525,29 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
             triplets.emplace_back(idx[j], idx[k], circles ? -J[j][k] : -0.5 * (J[k][j] + J[j][k]));
       }
     }
+    for (int i = 0; i < n; ++i)
+      if (identityRow[i]) triplets.emplace_back(i, i, 1.0);
     Eigen::VectorXd delta;
     if (!circles) {
       H.setFromTriplets(triplets.begin(), triplets.end());
       if (!patternValid) {
-        solver.analyzePattern(H);
+        solver.patternChanged();
         patternValid = true;
       }
-      solver.factorize(H);
-      if (solver.info() != Eigen::Success) {
+      // Inexact Newton with forcing term η = 10⁻² min(1, max|r|): the linear residual adds at most η|r| to the next
+      // residual, which keeps the convergence quadratic (Dembo–Eisenstat–Steihaug 1982) and the direction a descent
+      // direction for the merit (slope ≤ −(1 − η)|r|²). 10⁻¹³ is the floor a preconditioned solve reaches in double.
+      const double eta = std::max(1e-13, 1e-2 * std::min(1.0, maxAbs));
+      if (!solver.solve(H, r, eta, delta)) {
         std::ostringstream msg;
         msg.precision(3);
         msg << "discrete Ricci flow: the Hessian is not positive definite at Newton step " << report.newtonSteps
             << " (max |Θ̂ − Θ| = " << maxAbs << " rad); a triangle has probably degenerated";
         throw ConvergenceError(msg.str());
       }
-      delta = -solver.solve(r);
+      delta = -delta;
+      for (int i = 0; i < n; ++i)
+        if (identityRow[i]) delta[i] = 0;  // exactly: the conjugate gradients leave round-off there
     } else {
       // J = ∂(Θ̂ − Θ)/∂u = H + (local terms of Θ̂ through ℓ_prev, ℓ_next) + Σ_loops U Vᵀ (through R), with
       // dℓ_e = (ℓ_e/2)(du_a + du_b), c_e = dφ_e/dx_e = ±1/sqrt(1 − x_e²) (x_e = ℓ_e/2R), dR = R Σ c_e dℓ_e / Σ c_e ℓ_e
@@ -483,6 +625,7 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
     info.step = report.newtonSteps + 1;
     info.maxResidual = maxAbs;
     const double norm2Old = norm2;
+    bool startChecked = false;
     while (true) {
       for (int i = 0; i < n; ++i) metric.u()[unknowns[i]] = u0[unknowns[i]] + t * delta[i];
       const std::int64_t flips = metric.makeDelaunay(options.delaunayTolerance, log);
@@ -497,6 +640,21 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
         break;
       }
       t *= 0.5;
+      if (options.allowDegenerateFaces && options.returnAtDegenerateStall && t < 1.0 / 16 && !startChecked) {
+        // Back to the step's start, where the degenerate faces that the caller can repair are (once per step).
+        startChecked = true;
+        for (int i = 0; i < n; ++i) metric.u()[unknowns[i]] = u0[unknowns[i]];
+        report.flips += metric.makeDelaunay(options.delaunayTolerance, log);
+        double startMax = 0, startNorm2 = 0;
+        residual(startMax, startNorm2);
+        if (anyDegenerateFace()) {
+          maxAbs = startMax;
+          norm2 = startNorm2;
+          report.maxResidual = maxAbs;
+          report.stoppedAtDegenerate = true;
+          break;
+        }
+      }
       if (t < options.minStep && gaugeLoop >= 0 && !gaugeOn) {
         for (int i = 0; i < n; ++i) metric.u()[unknowns[i]] = u0[unknowns[i]];
         metric.makeDelaunay(options.delaunayTolerance, log);
@@ -522,17 +680,27 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
         throw ConvergenceError(msg.str());
       }
     }
+    if (report.stoppedAtDegenerate) {
+      ++report.newtonSteps;
+      break;
+    }
     info.stepLength = t;
     ++report.newtonSteps;
     report.maxResidual = maxAbs;
     if (options.onStep) options.onStep(info);
   }
   report.maxResidual = maxAbs;
+  report.factorizations = solver.factorizations() - factorizationsBefore;
+  report.cgIterations = solver.cgIterations() - cgBefore;
+  if (report.stoppedAtDegenerate) {
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+  }
   // The extended angles (π, 0, 0) make the energy convex everywhere, but a solution with such a face is not a metric:
   // it happens only next to edges that may not flip (boundary, frozen), when the conformal class has no triangulation
   // of this boundary with valid triangles.
   for (int f = 0; f < m.nFaces() && !options.allowDegenerateFaces; ++f)
-    if (!metric.isFrozen(f) && faceGeometry(metric, f).degenerate)
+    if (!metric.isFrozen(f) && faces[f].degenerate)
       throw ConvergenceError("discrete Ricci flow converged to a degenerate face " + std::to_string(f) + " (" +
                              std::to_string(m.faceVertex(f, 0)) + ", " + std::to_string(m.faceVertex(f, 1)) + ", " +
                              std::to_string(m.faceVertex(f, 2)) +

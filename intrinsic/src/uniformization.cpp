@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <queue>
 #include <sstream>
@@ -29,6 +30,8 @@ std::string toString(UniformizationTarget target) {
       return "circle-domain";
     case UniformizationTarget::HyperbolicGeodesicBoundary:
       return "hyperbolic-geodesic-boundary";
+    case UniformizationTarget::FlatKeepBoundary:
+      return "flat-keep-boundary";
   }
   return "unknown";
 }
@@ -67,6 +70,8 @@ RicciFlowOptions withProgress(const UniformizationOptions& options, const std::s
 void accumulate(UniformizationReport& report, const RicciFlowReport& flow) {
   report.newtonSteps += flow.newtonSteps;
   report.flips += flow.flips;
+  report.factorizations += flow.factorizations;
+  report.cgIterations += flow.cgIterations;
   report.maxResidual = flow.maxResidual;
   report.effectiveTolerance = flow.effectiveTolerance;
 }
@@ -290,8 +295,16 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   // to the link edge bc. Both are exact Penner flips; repeat until the star is stable.
   RicciFlowOptions flow = withProgress(options, "sphere (punctured plane)");
   flow.allowDegenerateFaces = true;
+  // "Solve, repair, solve again": the first solves return as soon as a degenerate face stalls the line search (the
+  // energy is only C¹ there), so the star is repaired early instead of after several short Newton steps.
+  flow.returnAtDegenerateStall = true;
+  flow.solverCache = makeFlowSolverCache(flow.maxReuseIterations);
   for (int round = 0;; ++round) {
-    accumulate(report, solveConformalFlow(metric, target, flow, &log));
+    const RicciFlowReport solved = solveConformalFlow(metric, target, flow, &log);
+    accumulate(report, solved);
+    // Early returns only until the first solve converges: afterwards reflex repairs take vertices out of the link, and
+    // stopping the next solve at a degenerate face would put them straight back (measured: a 2-cycle of rounds).
+    if (!solved.stoppedAtDegenerate) flow.returnAtDegenerateStall = false;
     // All repairs of one kind are batched per round (each flip only touches its own quad; the faces it creates
     // around ∞ are marked frozen at once so that later candidates see the current star).
     bool changed = false;
@@ -311,6 +324,11 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
         target.fixed[i] = 1;        // i is on the link now (its Dirichlet value is set by updateStar)
       }
     }
+    if (!changed && solved.stoppedAtDegenerate) {
+      // Nothing to repair: finish this solve on the C¹ extension (reflex vertices are only judged at a solution).
+      flow.returnAtDegenerateStall = false;
+      continue;
+    }
     if (!changed) {
       // Reflex link vertices, no two consecutive on the link (their spokes share a face), keeping the link ≥ 3.
       const std::vector<double> sums = flowAngleSums(metric);
@@ -329,6 +347,10 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
       }
     }
     if (!changed) break;
+    if (options.progress)
+      options.progress("sphere: star repair round " + std::to_string(round + 1) + ", link of " +
+                       std::to_string(link.size()) + " vertices, last solve " + std::to_string(solved.newtonSteps) +
+                       " Newton steps" + (solved.stoppedAtDegenerate ? " (stopped at a degenerate face)" : ""));
     if (round > 10 * nV) return {false, "the star of the puncture did not stabilize"};
     if (!updateStar()) return {false, "a star flip made the link of the puncture non-simple"};
   }
@@ -350,9 +372,34 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   IntrinsicTriangulation planarTri = metric.triangulation();
   std::vector<Eigen::Vector2d> z;
   try {
-    z = layoutFlat(planarTri, 1e-6, frozen);
+    // The closing test of layoutFlat is relative to the mean edge length, but the punctured plane spans many orders of
+    // magnitude (spokes ~1/h near the link, ~h far from it) and the unfolding's round-off is relative to the
+    // coordinates, and the unfolding accumulates the flow's angle residual along breadth-first paths of ~sqrt(#V)
+    // triangles (measured closing mismatches of 10⁻⁸–10⁻⁶ at 10⁶ vertices, residual 3·10⁻¹⁰). The test below replaces
+    // it: every edge of the layout must have its flow length to 10⁻⁶ relative, or to a = max(10⁻¹⁰, 10 ε sqrt(#V)) of
+    // its endpoints' coordinates, ε the flow's stopping tolerance (ten times the expected accumulation; edges of 10⁻¹²
+    // on CGAL's cow cannot be resolved at coordinates of order 1 and need not be: below, the lengths are taken from the
+    // Penner form and the coordinates only enter through smooth conformal factors). The flow itself certifies the
+    // metric flat to ε; this test catches a layout gone wrong. The embedding is verified on the sphere below.
+    z = layoutFlat(planarTri, std::numeric_limits<double>::infinity(), frozen);
   } catch (const ConvergenceError& e) {
     return {false, e.what()};
+  }
+  const double allowance = std::max(1e-10, 10 * report.effectiveTolerance * std::sqrt(double(nV)));
+  for (int f = 0; f < m.nFaces(); ++f) {
+    if (frozen[f]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int h = 3 * f + k;
+      const double length = planarTri.length(h), laid = (z[m.tip(h)] - z[m.tail(h)]).norm();
+      if (!(std::abs(laid - length) <= 1e-6 * length + allowance * (z[m.tip(h)].norm() + z[m.tail(h)].norm()))) {
+        std::ostringstream msg;
+        msg.precision(3);
+        msg << "the planar layout gives edge " << m.edge(h) << " the length " << laid << " instead of " << length
+            << " (error " << std::abs(laid - length) << " at coordinates of size " << z[m.tip(h)].norm()
+            << ", allowed 1e-6 of the length plus " << allowance << " of the coordinates)";
+        return {false, msg.str()};
+      }
+    }
   }
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
   for (int v = 0; v < nV; ++v)
@@ -414,20 +461,39 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     report.centringIterations = it + 1;
   }
 
-  // The spherical triangulation: geodesic triangles on the points. It is embedded (hence has angle sums 2π) iff every
-  // face is positively oriented and valid; a non-convex flattened link shows up here.
+  // The spherical triangulation: geodesic triangles on the points. Inverse stereographic projection and the Möbius
+  // maps scale chords by vertex factors exactly (|φ(x) − φ(y)| = sqrt(|φ'(x)||φ'(y)|) |x − y|), so every chord is also
+  // e^{(w_i+w_j)/2} c⁰_ij, the Penner form of the flow's metric. Lengths from the points give angle sums 2π to
+  // round-off whatever the flow residual, but chords of unit vectors carry an absolute round-off of ~10⁻¹⁶: on thin
+  // appendages whose conformal factor reaches 10⁻¹⁵ (CGAL's cow: its tail collapses to one double-precision point) they
+  // are meaningless. So the points are used when every chord is at least 10⁻⁴ (relative round-off below ~10⁻¹²), and
+  // otherwise every edge takes the Penner form, exact to round-off at any scale, whose angle sums are 2π to the flow
+  // residual (mixing both would not be: the two differ by the layout's accumulated error). Faces are checked for
+  // positive orientation of their points where these resolve them; every face must be a valid spherical triangle and
+  // every angle sum 2π (to 10⁻⁸): a spherical metric without cone points on a genus-0 surface is the round sphere, so
+  // this certifies an embedded geodesic triangulation (a non-convex flattened link shows up here).
   IntrinsicTriangulation sphere;
   sphere.mesh = m;
   sphere.background = Background::Spherical;
   sphere.edgeLengths.resize(m.nEdges());
+  std::vector<char> fromPoints(m.nEdges(), 1);
+  bool allResolved = true;
   for (int e = 0; e < m.nEdges(); ++e) {
     const int h = m.edgeHalfedge(e);
-    sphere.edgeLengths[e] = sphericalDistance(x[m.tail(h)], x[m.tip(h)]);
+    fromPoints[e] = (x[m.tail(h)] - x[m.tip(h)]).norm() >= 1e-4;
+    allResolved = allResolved && fromPoints[e];
   }
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e), a = m.tail(h), b = m.tip(h);
+    sphere.edgeLengths[e] = allResolved ? sphericalDistance(x[a], x[b])
+                                        : lengthFromPenner(Background::Spherical,
+                                                           metric.referencePenner(e) * std::exp(0.5 * (w[a] + w[b])));
+  }
+  report.pennerLengths = !allResolved;
   for (int f = 0; f < m.nFaces(); ++f) {
     const Eigen::Vector3d &a = x[m.faceVertex(f, 0)], &b = x[m.faceVertex(f, 1)], &c = x[m.faceVertex(f, 2)];
-    // Differences first: tiny faces (conformal factors of e^-20 occur on thin appendages) keep their sign.
-    if (!((b - a).cross(c - a).dot(a + b + c) > 0) ||
+    const bool resolved = fromPoints[m.edge(3 * f)] && fromPoints[m.edge(3 * f + 1)] && fromPoints[m.edge(3 * f + 2)];
+    if ((resolved && !((b - a).cross(c - a).dot(a + b + c) > 0)) ||
         !isValidTriangle(Background::Spherical, sphere.length(3 * f), sphere.length(3 * f + 1),
                          sphere.length(3 * f + 2))) {
       std::ostringstream msg;
@@ -473,6 +539,9 @@ Uniformization uniformizeSphere(const IntrinsicTriangulation& input, const Unifo
       return out;
     }
     reasons += (reasons.empty() ? "" : "; ") + ("vertex " + std::to_string(candidates[attempt]) + ": " + result.why);
+    if (options.progress)
+      options.progress("sphere: puncture at vertex " + std::to_string(candidates[attempt]) +
+                       " rejected: " + result.why);
     report.newtonSteps = r.newtonSteps;
     report.flips = r.flips;
   }

@@ -4,7 +4,8 @@
 // Targets by topology (one connected component):
 //   closed genus 0  → the unit sphere: puncture a vertex ∞, flatten the rest with Dirichlet data u_a = −2 log ℓ_a∞ on
 //                     its link (the limit of vertex scaling with ∞ sent to infinity), lay out, inverse stereographic
-//                     projection, Möbius centring; spherical lengths from the chords of the points;
+//                     projection, Möbius centring; spherical lengths from the chords of the points, or (when a
+//                     chord is below 10⁻⁴, e.g. thin appendages) from the exact Penner form e^{(w_i+w_j)/2} c⁰_ij;
 //   closed genus 1  → flat, total area 1;
 //   closed genus ≥ 2 → hyperbolic, curvature −1;
 //   genus 0 with b ≥ 1 boundary loops → flat, every loop a circle (a disk to the unit disk, b ≥ 2 to a circle domain,
@@ -28,7 +29,15 @@
 
 namespace conformesh::intrinsic {
 
-enum class UniformizationTarget { Sphere, FlatTorus, Hyperbolic, CircleDomain, HyperbolicGeodesicBoundary };
+// FlatKeepBoundary: a disk flattened with its boundary lengths kept (boundary_flattening.h), not reached by uniformize.
+enum class UniformizationTarget {
+  Sphere,
+  FlatTorus,
+  Hyperbolic,
+  CircleDomain,
+  HyperbolicGeodesicBoundary,
+  FlatKeepBoundary
+};
 std::string toString(UniformizationTarget target);
 
 struct UniformizationOptions {
@@ -47,11 +56,15 @@ struct UniformizationReport {
   int genus = 0, boundaryLoops = 0;
   int newtonSteps = 0;
   std::int64_t flips = 0;
-  double maxResidual = 0;  // of the last flow solve (radians)
+  int factorizations = 0, cgIterations = 0;  // Newton linear algebra, summed over the flow solves (ricci_flow.h)
+  double maxResidual = 0;                    // of the last flow solve (radians)
   double effectiveTolerance = 0;
   int punctureVertex = -1;  // genus 0 only
   int punctureAttempts = 0;
   int centringIterations = 0;
+  // Genus 0: the spherical lengths were taken from the Penner form e^{(w_i+w_j)/2} c⁰_ij instead of the chords of the
+  // points, because some chord was below 10⁻⁴ (thin appendages; then `positions` of tiny regions coincide in double).
+  bool pennerLengths = false;
   double seconds = 0;
 };
 
