@@ -1,12 +1,13 @@
 // uniformize_command.cpp — `conformesh uniformize IN -o OUT`: the discrete Ricci (Yamabe) flow T0 → T0* of the
 // paper's §4.1, written as a PLY with its background geometry, edge lengths, the conformal factor λ per vertex and
-// (optionally) the flip log that maps points of T0* back to T0.
+// (optionally) the flip log that maps points of T0* back to T0; `--method` selects the circle-packing flows instead.
 #include <cstdio>
 #include <fstream>
 #include <memory>
 
 #include "cli_common.h"
 #include "commands.h"
+#include "conformesh/intrinsic/circle_packing.h"
 #include "conformesh/intrinsic/curvature.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh_io.h"
@@ -35,6 +36,20 @@ nlohmann::json correspondenceJson(const intrinsic::FlowCorrespondence& c) {
           {"flips", flips}};
 }
 
+// The flow chosen by --method: vertex scaling (uniformization.h) or a circle-packing flow (circle_packing.h, closed
+// genus >= 1 only), which returns the same kind of result with no flips.
+intrinsic::Uniformization runFlow(const UniformizeOptions& o, const intrinsic::IntrinsicTriangulation& input,
+                                  const intrinsic::UniformizationOptions& options) {
+  if (o.method == "yamabe") return intrinsic::uniformize(input, options);
+  intrinsic::CirclePackingOptions packing;
+  packing.scheme = o.method == "circle-packing" ? intrinsic::CirclePackingScheme::Tangential
+                                                : intrinsic::CirclePackingScheme::InversiveDistance;
+  packing.tolerance = o.tolerance;
+  packing.maxNewtonSteps = o.maxSteps;
+  packing.progress = options.progress;
+  return intrinsic::uniformizeByCirclePacking(input, packing).result;
+}
+
 void runUniformize(const UniformizeOptions& o) {
   progress("reading " + o.input);
   const intrinsic::MeshData data = loadMesh(o.input);
@@ -43,13 +58,13 @@ void runUniformize(const UniformizeOptions& o) {
   options.flow.tolerance = o.tolerance;
   options.flow.maxNewtonSteps = o.maxSteps;
   options.progress = [](const std::string& line) { progress(line); };
-  const intrinsic::Uniformization u = intrinsic::uniformize(input, options);
+  const intrinsic::Uniformization u = runFlow(o, input, options);
 
   intrinsic::MeshData out = intrinsic::fromTriangulation(u.uniform);
   out.source = o.output;
   out.positions = u.positions;
   out.vertexProperties["lambda"] = u.lambda;
-  out.comments.push_back("uniformized by conformesh (discrete Yamabe flow): target " +
+  out.comments.push_back("uniformized by conformesh (" + o.method + " flow): target " +
                          intrinsic::toString(u.report.target));
   intrinsic::writeMesh(out, o.output);
   if (!o.correspondence.empty()) {
@@ -127,13 +142,21 @@ void registerUniformizeCommand(CLI::App& app) {
       "interior |angle sum - 2pi| recomputed from the output lengths in the output geometry; the Gauss-Bonnet\n"
       "residual (sum of curvature + K_background * area - 2 pi chi). A flow that does not converge is an error\n"
       "naming the residual it reached (exit status 1). docs/ricci_flow.md has the theory and the guarantees.\n"
+      "--method circle-packing | inversive-distance: the circle-packing flows of Jin-Kim-Luo-Gu (2008), for\n"
+      "comparison; closed surfaces of genus >= 1 only, no flips, so a solution need not exist: tangential\n"
+      "packings always exist (Koebe-Andreev-Thurston) but forget the input lengths (the result depends on the\n"
+      "connectivity alone); inversive-distance packings keep the input's conformal data but Newton can be blocked\n"
+      "by a triangle that ceases to exist, reported as an error naming the face. lambda is then the log ratio of\n"
+      "the mean edge lengths at each vertex before and after (an estimate; the correspondence is face-wise affine).\n"
       "Example: conformesh uniformize bunny.off -o bunny-sphere.ply --correspondence bunny-map.json");
   sub->add_option("input", o->input, "Input mesh (OBJ, OFF or PLY; lengths from the PLY edge element if present)")
       ->required();
   sub->add_option("-o,--output", o->output, "Output PLY (T0*)")->required();
   sub->add_option("--method", o->method,
-                  "Flow: yamabe (vertex scaling; the only one implemented — circle packing is not)")
-      ->check(CLI::IsMember({"yamabe"}))
+                  "Flow: yamabe (vertex scaling with Ptolemy flips, every topology), circle-packing (tangential\n"
+                  "circle packing) or inversive-distance (circle packing keeping the input's inversive distances);\n"
+                  "the two circle-packing flows take closed surfaces of genus >= 1 only")
+      ->check(CLI::IsMember({"yamabe", "circle-packing", "inversive-distance"}))
       ->capture_default_str();
   sub->add_option("--tolerance", o->tolerance,
                   "Stop when max |K - K^| is below this (radians); raised to 3e-13*sqrt(#vertices) on huge meshes")
