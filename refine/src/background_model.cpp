@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include <Eigen/Geometry>
-#include <Eigen/LU>
 
 namespace conformesh::refine {
 
@@ -160,9 +159,10 @@ std::optional<Vec3> BackgroundModel::circumcenter(const Vec3& a, const Vec3& b, 
 }
 
 Eigen::Vector3d BackgroundModel::barycentric(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x) const {
-  Eigen::Matrix3d m;
-  m << a, b, c;
-  Eigen::Vector3d beta = m.partialPivLu().solve(x);
+  // Cramer's rule for [a b c]·β = x, up to the common factor det[a b c] that the normalization removes: β_k is the
+  // triple product of x with the opposite pair, so its sign is exactly the (floating-point) orientation of x against
+  // that side — consistent with the walk's decisions — and no 3×3 factorization is needed.
+  const Eigen::Vector3d beta(x.dot(b.cross(c)), x.dot(c.cross(a)), x.dot(a.cross(b)));
   return beta / beta.sum();
 }
 

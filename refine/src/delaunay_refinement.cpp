@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <queue>
 #include <optional>
+#include <queue>
 #include <sstream>
 #include <string>
 
@@ -35,6 +35,16 @@ std::string num(double x) {
   s.precision(6);
   s << x;
   return s.str();
+}
+
+// Circumradius of face f: in the Euclidean background abc / (4·area) with Kahan's area (+∞ for a degenerate face), the
+// same value as intrinsic::faceCircumradius up to round-off but without its half-perimeter products; it is evaluated
+// for every face a flip or an insertion touches. Curved backgrounds use the core's formula.
+double circumradiusOf(const IntrinsicTriangulation& tri, int f) {
+  if (tri.background != Background::Euclidean) return intrinsic::faceCircumradius(tri, f);
+  const double a = tri.length(3 * f), b = tri.length(3 * f + 1), c = tri.length(3 * f + 2);
+  const double area4 = detail::fourAreaEuclidean(a, b, c);
+  return area4 > 0 ? a * b * c / area4 : INFINITY;
 }
 
 // Angle difference reduced to (−π, π].
@@ -65,18 +75,21 @@ class Refiner {
   // === queues and tests
   void pushFace(int f);
   void pushFacesAround(int v);
+  bool meetsSizeTarget(int f) const;
+  void pushFront(int f);
   bool segmentEncroached(int e) const;
   void processSegment(int e);
   void processFace(int f);
   // === mutation
   void flip(int e);
-  void restoreDelaunay(std::vector<int> stack, int center = kInvalid);
+  void restoreDelaunay(std::vector<int>& stack, int center = kInvalid);  // consumes `stack`
   int delaunaySign(int e) const;
   void afterInsertion(int p);
   void splitSegment(int e);
   void insertAt(const TraceResult& trace, const InputSurface::Arrival& arrival);
   void insertOnEdge(const TraceResult& trace, int cornerOpposite, const InputSurface::Arrival& arrival);
   std::vector<int> encroachedByPoint(const TraceResult& trace) const;
+  std::optional<Vec3> frontalPoint(int f, const std::array<Vec3, 3>& P, const Vec3& c) const;
   void countInsertion();
 
   const IntrinsicTriangulation& in_;
@@ -97,8 +110,17 @@ class Refiner {
   // (measured: mean smallest angle 46–48° → see docs/refinement.md). Keys may go stale when flips change a queued face;
   // they only order the work, processFace re-tests every face.
   std::priority_queue<std::pair<double, int>> faceQueue_;
+  // With RefineOptions::frontal: the bad faces next to a face that meets its size target (the front), served before
+  // faceQueue_ so that the mesh grows from good regions as in Rebay's algorithm. Entries may go stale; processFace
+  // re-tests every face, and every bad face is also in faceQueue_.
+  std::priority_queue<std::pair<double, int>> frontQueue_;
+  std::vector<char> frontQueued_;
   std::deque<int> segmentQueue_;
   std::vector<char> faceQueued_;
+  // Reused work buffers (no allocation per insertion): the cavity search of encroachedByPoint, Lawson's edge stack.
+  mutable std::vector<std::pair<int, std::array<Vec3, 3>>> cavityStack_;
+  mutable std::vector<int> cavityVisited_;
+  std::vector<int> flipStack_;
   std::int64_t insertions_ = 0;
 };
 
@@ -203,10 +225,45 @@ void Refiner::pushFace(int f) {
   if (faceQueued_[f]) return;
   faceQueued_[f] = 1;
   const HalfedgeMesh& m = tri_.mesh;
+  const double R = circumradiusOf(tri_, f);
+  // A face that meets both bounds even with the largest λ anywhere (the conservative size test of processFace) is not
+  // queued at all: most faces a flip or an insertion touches are good, and keeping them out of the heap spares its
+  // O(log n) churn and a second evaluation. Every later change of the face (flip, split) pushes it again.
+  if (std::isfinite(R) && !(R > opt_.epsilon * std::exp(-lambdaMax_) * (1 + 1e-12))) {
+    const double shortest = std::min({tri_.length(3 * f), tri_.length(3 * f + 1), tri_.length(3 * f + 2)});
+    if (!(R > opt_.ratioBound * shortest * (1 + 1e-12))) {
+      faceQueued_[f] = 0;
+      return;
+    }
+  }
   const double meanLambda =
       (res_.lambda[m.faceVertex(f, 0)] + res_.lambda[m.faceVertex(f, 1)] + res_.lambda[m.faceVertex(f, 2)]) / 3;
-  const double R = intrinsic::faceCircumradius(tri_, f);
   faceQueue_.push({std::isfinite(R) ? R * std::exp(meanLambda) : INFINITY, f});
+}
+
+bool Refiner::meetsSizeTarget(int f) const {
+  // The queue's estimate of the size test (λ averaged over the corners instead of interpolated at the circumcentre):
+  // it only chooses where the front is, never whether a face is refined.
+  const HalfedgeMesh& m = tri_.mesh;
+  const double lam =
+      (res_.lambda[m.faceVertex(f, 0)] + res_.lambda[m.faceVertex(f, 1)] + res_.lambda[m.faceVertex(f, 2)]) / 3;
+  return circumradiusOf(tri_, f) * std::exp(lam) <= opt_.epsilon;
+}
+
+void Refiner::pushFront(int f) {
+  if (frontQueued_.size() < static_cast<size_t>(tri_.mesh.nFaces())) frontQueued_.resize(tri_.mesh.nFaces(), 0);
+  if (frontQueued_[f] || meetsSizeTarget(f)) return;
+  const HalfedgeMesh& m = tri_.mesh;
+  bool nextToGood = false;
+  for (int k = 0; k < 3 && !nextToGood; ++k) {
+    const int g = m.twin(3 * f + k);
+    nextToGood = g != kInvalid && meetsSizeTarget(HalfedgeMesh::face(g));
+  }
+  if (!nextToGood) return;
+  frontQueued_[f] = 1;
+  const double lam =
+      (res_.lambda[m.faceVertex(f, 0)] + res_.lambda[m.faceVertex(f, 1)] + res_.lambda[m.faceVertex(f, 2)]) / 3;
+  frontQueue_.push({circumradiusOf(tri_, f) * std::exp(lam), f});
 }
 
 void Refiner::pushFacesAround(int v) {
@@ -216,6 +273,12 @@ void Refiner::pushFacesAround(int v) {
   do {
     const int f = HalfedgeMesh::face(h);
     pushFace(f);
+    if (opt_.frontal) {
+      // The new faces, and the faces beyond their outer edges, may now lie on the front.
+      pushFront(f);
+      const int g = m.twin(HalfedgeMesh::next(h));
+      if (g != kInvalid) pushFront(HalfedgeMesh::face(g));
+    }
     if (hasBoundary_)
       for (int k = 0; k < 3; ++k)
         if (m.twin(3 * f + k) == kInvalid) segmentQueue_.push_back(m.edge(3 * f + k));
@@ -251,6 +314,15 @@ int Refiner::delaunaySign(int e) const {
   const HalfedgeMesh& m = tri_.mesh;
   const int h = m.edgeHalfedge(e), g = m.twin(h);
   const double a = tri_.edgeLengths[e], a2 = a * a;
+  // Both opposite angles certainly acute (b² + c² − a² above 1e-14 of its magnitude, far above its round-off): then
+  // α + β < π and the edge is Delaunay, with no square root. This settles most edges of a good mesh.
+  bool bothAcute = true;
+  for (int x : {h, g}) {
+    const double b = tri_.length(HalfedgeMesh::next(x)), c = tri_.length(HalfedgeMesh::prev(x));
+    const double num = b * b + c * c - a2;
+    if (!(num > 1e-14 * (b * b + c * c + a2))) bothAcute = false;
+  }
+  if (bothAcute) return 1;
   double sum = 0, scale = 0;
   for (int x : {h, g}) {
     const double b = tri_.length(HalfedgeMesh::next(x)), c = tri_.length(HalfedgeMesh::prev(x));
@@ -265,7 +337,7 @@ int Refiner::delaunaySign(int e) const {
   return 0;
 }
 
-void Refiner::restoreDelaunay(std::vector<int> stack, int center) {
+void Refiner::restoreDelaunay(std::vector<int>& stack, int center) {
   const HalfedgeMesh& m = tri_.mesh;
   // Lawson's algorithm terminates (Bobenko–Springborn in each background); the cap only guards against invalid input.
   std::int64_t budget = 1000LL * (m.nEdges() + 16);
@@ -314,14 +386,14 @@ void Refiner::afterInsertion(int p) {
   const HalfedgeMesh& m = tri_.mesh;
   edgeLoop_.resize(m.nEdges(), -1);
   sharpCorner_.resize(m.nVertices(), 0);
-  std::vector<int> stack;
+  flipStack_.clear();
   const int start = m.vertexHalfedge(p);
   int h = start;
   do {
-    stack.push_back(m.edge(HalfedgeMesh::next(h)));
+    flipStack_.push_back(m.edge(HalfedgeMesh::next(h)));
     h = m.nextOutgoing(h);
   } while (h != kInvalid && h != start);
-  restoreDelaunay(std::move(stack), p);
+  restoreDelaunay(flipStack_, p);
   pushFacesAround(p);
 }
 
@@ -390,19 +462,35 @@ std::vector<int> Refiner::encroachedByPoint(const TraceResult& trace) const {
   // The faces whose circumcircle contains the point (its Delaunay cavity), grown from the face containing it. A point
   // encroaching boundary edge s lies in the circumcircle of s's triangle whenever s itself is not encroached (that
   // circumcircle then contains the half of s's diametral disk on the domain side), so only the cavity's boundary edges
-  // need testing. The in-circle test compares distances to the circumcentre; it decides only whether a boundary edge
-  // is split early, never the triangulation, so it does not need to be exact.
+  // need testing. The in-circle test decides only whether a boundary edge is split early, never the triangulation, so
+  // it does not need to be exact. This runs once per insertion: the buffers are reused and the Euclidean background
+  // uses the polynomial in-circle determinant instead of constructing circumcentres.
   const HalfedgeMesh& m = tri_.mesh;
   const Vec3& t = trace.end;
+  const bool flat = tri_.background == Background::Euclidean;
   std::vector<int> result;
-  std::vector<std::pair<int, std::array<Vec3, 3>>> stack{{trace.face, trace.corners}};
-  std::vector<int> visited{trace.face};
+  cavityStack_.clear();
+  cavityVisited_.clear();
+  cavityStack_.push_back({trace.face, trace.corners});
+  cavityVisited_.push_back(trace.face);
   auto encroaches = [&](const Vec3& a, const Vec3& b) {
+    if (flat) return (a.x() - t.x()) * (b.x() - t.x()) + (a.y() - t.y()) * (b.y() - t.y()) < 0;
     return model_.inner(model_.tangentToward(t, a), model_.tangentToward(t, b)) < 0;
   };
-  while (!stack.empty()) {
-    auto [f, P] = stack.back();
-    stack.pop_back();
+  auto inCircle = [&](const std::array<Vec3, 3>& R) {
+    if (flat) {
+      // Sign of the classical 3×3 in-circle determinant (R counter-clockwise): positive when t is inside.
+      const double ax = R[0].x() - t.x(), ay = R[0].y() - t.y(), bx = R[1].x() - t.x(), by = R[1].y() - t.y();
+      const double cx = R[2].x() - t.x(), cy = R[2].y() - t.y();
+      const double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+      return ax * (by * c2 - b2 * cy) - ay * (bx * c2 - b2 * cx) + a2 * (bx * cy - by * cx) > 0;
+    }
+    const std::optional<Vec3> cc = model_.circumcenter(R[0], R[1], R[2]);
+    return cc && model_.distance(*cc, t) < model_.distance(*cc, R[0]);
+  };
+  while (!cavityStack_.empty()) {
+    const auto [f, P] = cavityStack_.back();
+    cavityStack_.pop_back();
     for (int k = 0; k < 3; ++k) {
       const int h = 3 * f + k, g = m.twin(h);
       const Vec3 &Pp = P[k], &Q = P[(k + 1) % 3];
@@ -411,16 +499,15 @@ std::vector<int> Refiner::encroachedByPoint(const TraceResult& trace) const {
         continue;
       }
       const int f2 = HalfedgeMesh::face(g);
-      if (std::find(visited.begin(), visited.end(), f2) != visited.end()) continue;
+      if (std::find(cavityVisited_.begin(), cavityVisited_.end(), f2) != cavityVisited_.end()) continue;
       std::array<Vec3, 3> R;
       const int kg = g % 3;
       R[kg] = Q;
       R[(kg + 1) % 3] = Pp;
-      R[(kg + 2) % 3] = model_.thirdVertex(Q, Pp, fastCornerAngle(tri_, g), tri_.length(HalfedgeMesh::prev(g)));
-      const std::optional<Vec3> cc = model_.circumcenter(R[0], R[1], R[2]);
-      if (cc && model_.distance(*cc, t) < model_.distance(*cc, R[0])) {
-        visited.push_back(f2);
-        stack.push_back({f2, R});
+      R[(kg + 2) % 3] = unfoldThirdVertex(tri_, model_, g, Q, Pp);
+      if (inCircle(R)) {
+        cavityVisited_.push_back(f2);
+        cavityStack_.push_back({f2, R});
       }
     }
   }
@@ -444,7 +531,7 @@ void Refiner::insertOnEdge(const TraceResult& trace, int j, const InputSurface::
   const Vec3 t = model_.fromBarycentric(P[0], P[1], P[2], b);
   const int g = m.twin(he);
   const Vec3 &X = P[(j + 1) % 3], &Y = P[(j + 2) % 3];  // he runs X -> Y; g runs Y -> X
-  const Vec3 D = model_.thirdVertex(Y, X, fastCornerAngle(tri_, g), tri_.length(HalfedgeMesh::prev(g)));
+  const Vec3 D = unfoldThirdVertex(tri_, model_, g, Y, X);
   Vec3 a, bb, c, d;
   if (m.edgeHalfedge(e) == he) {
     a = X, bb = Y, c = P[j], d = D;
@@ -502,7 +589,7 @@ void Refiner::processFace(int f) {
     shortest = std::min(shortest, l);
     if (l > longest) longest = l, longestK = k;
   }
-  const double R = intrinsic::faceCircumradius(tri_, f);  // +inf for a hyperbolic triangle without a circumcircle
+  const double R = circumradiusOf(tri_, f);  // +inf for a hyperbolic triangle without a circumcircle
   // Strict comparisons with a relative slack of 1e-12: a triangle exactly at a bound (circumradius equal to ε, or to
   // B times its shortest edge) is good, whatever the last bit of its computed circumradius.
   // Shewchuk's terminator, in its simplest form: a triangle with a corner at a sharp boundary corner (< 60°) may be
@@ -542,16 +629,33 @@ void Refiner::processFace(int f) {
       offCenter = true;
     }
   }
-  const double r = model_.distance(BackgroundModel::origin(), target);
   if (std::isfinite(R) && R < minSize_)
     throw ConvergenceError("refine: face " + std::to_string(f) + " (vertices " + std::to_string(m.faceVertex(f, 0)) +
                            ", " + std::to_string(m.faceVertex(f, 1)) + ", " + std::to_string(m.faceVertex(f, 2)) +
                            ") still needs refining at circumradius " + num(R) + ", below the smallest size " +
                            num(minSize_) + ": the shape bound B = " + num(opt_.ratioBound) +
                            " cannot be met near this face (small input angle?)");
-  const double theta = sp_.turned(tri_, hs, std::atan2(target.y(), target.x()));
-  const TraceResult tr = traceFromVertex(tri_, sp_, model_, v, theta, r, hs);
-  res_.statistics.traceSteps += tr.steps;
+  // Frontal placement (size-driven triangles only): the point on the bisector of a front edge that makes a triangle of
+  // the target size with it. With λ ≡ 0 the size test needs no location, so the frontal point is traced directly;
+  // otherwise the circumcentre is located first, for λ(c) of the size test.
+  const std::optional<Vec3> front = !badShape && opt_.frontal && !centroid ? frontalPoint(f, P, *cc) : std::nullopt;
+  if (front && uniform_) target = *front;
+  auto traceTo = [&](const Vec3& x, double& theta, double& r) {
+    r = model_.distance(BackgroundModel::origin(), x);
+    theta = sp_.turned(tri_, hs, std::atan2(x.y(), x.x()));
+    TraceResult t = traceFromVertex(tri_, sp_, model_, v, theta, r, hs);
+    res_.statistics.traceSteps += t.steps;
+    return t;
+  };
+  double theta = 0, r = 0;
+  TraceResult tr = traceTo(target, theta, r);
+  bool frontal = front && uniform_;
+  if (frontal && !tr.reachedTarget()) {
+    // The frontal point lies beyond a boundary edge (a non-convex domain): fall back to the circumcentre.
+    target = *cc;
+    frontal = false;
+    tr = traceTo(target, theta, r);
+  }
   if (!tr.reachedTarget()) {
     // The circumcentre lies outside the domain: split the boundary edge the geodesic to it crosses (Ruppert).
     ++res_.statistics.rejectedCircumcenters;
@@ -559,11 +663,19 @@ void Refiner::processFace(int f) {
     pushFace(f);
     return;
   }
-  const InputSurface::Arrival arr =
-      inputPtr_->follow(v, v < res_.statistics.inputVertices, res_.locations[v], theta, r);
+  InputSurface::Arrival arr = inputPtr_->follow(v, v < res_.statistics.inputVertices, res_.locations[v], theta, r);
   if (!badShape) {
     const double lam = uniform_ ? 0.0 : inputPtr_->interpolate(opt_.lambda, arr.location);
     if (!(R > opt_.epsilon * std::exp(-lam) * (1 + 1e-12))) return;
+  }
+  if (front && !uniform_) {
+    double thetaF = 0, rF = 0;
+    const TraceResult trF = traceTo(*front, thetaF, rF);
+    if (trF.reachedTarget()) {
+      tr = trF;
+      arr = inputPtr_->follow(v, v < res_.statistics.inputVertices, res_.locations[v], thetaF, rF);
+      frontal = true;
+    }
   }
   if (hasBoundary_) {
     const std::vector<int> enc = encroachedByPoint(tr);
@@ -579,9 +691,50 @@ void Refiner::processFace(int f) {
     ++res_.statistics.centroidInsertions;
   else if (offCenter)
     ++res_.statistics.offCenterInsertions;
+  else if (frontal)
+    ++res_.statistics.frontalInsertions;
   else
     ++res_.statistics.circumcenterInsertions;
   insertAt(tr, arr);
+}
+
+std::optional<Vec3> Refiner::frontalPoint(int f, const std::array<Vec3, 3>& P, const Vec3& c) const {
+  // Rebay's frontal Delaunay placement (J. Comput. Phys. 106, 1993), for a triangle that is bad by size only. A "front"
+  // edge of f is one whose neighbour already meets its size target (key R·e^λ̄ ≤ ε, the queue's estimate). On the
+  // longest front edge pq (length 2p, midpoint M, f's circumcentre c at distance q from M on f's side) the point X on
+  // the geodesic M → c at distance d = ρ + √(ρ² − p²), ρ = max(ρ_target, p), ρ_target = ε·e^(−λ̄(pq)), is the apex of
+  // the isosceles triangle on pq whose circumradius is the target: a near-equilateral triangle of the intended size
+  // grows from the front. X is used only when d < q, i.e. strictly between M and c: it lies in f's empty circumdisk,
+  // so inserting it destroys f, and every vertex is at least R − |cX| = R − q + d ≥ d ≥ ρ_target away from it (R ≥ q).
+  // The insertion radius of a size-driven insertion thus stays above the smallest target size, and the packing
+  // argument of docs/refinement.md §1 still bounds the vertex count. The formulas for ρ and d are Euclidean; in curved
+  // backgrounds they only choose the point on the geodesic M → c, and both properties above still hold (they use the
+  // triangle inequality and the empty circumdisk only).
+  const HalfedgeMesh& m = tri_.mesh;
+  int best = -1;
+  double bestLength = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int g = m.twin(3 * f + k);
+    if (g == kInvalid) continue;
+    const int f2 = HalfedgeMesh::face(g);
+    const double R2 = circumradiusOf(tri_, f2);
+    const double lam2 =
+        (res_.lambda[m.faceVertex(f2, 0)] + res_.lambda[m.faceVertex(f2, 1)] + res_.lambda[m.faceVertex(f2, 2)]) / 3;
+    if (!(R2 * std::exp(lam2) <= opt_.epsilon)) continue;
+    const double l = tri_.length(3 * f + k);
+    if (l > bestLength) bestLength = l, best = k;
+  }
+  if (best < 0) return std::nullopt;
+  const Vec3 &A = P[best], &B = P[(best + 1) % 3];
+  if (orientationSign(A, B, c) <= 0) return std::nullopt;  // c not strictly on f's side of pq: obtuse apex
+  const Vec3 M = model_.exp(A, model_.tangentToward(A, B), bestLength / 2);
+  const double p = bestLength / 2, q = model_.distance(M, c);
+  const double lamEdge = (res_.lambda[m.faceVertex(f, best)] + res_.lambda[m.faceVertex(f, (best + 1) % 3)]) / 2;
+  const double target = opt_.epsilon * std::exp(-lamEdge);
+  const double rho = std::max(target, p);
+  const double d = rho + std::sqrt(std::max(0.0, rho * rho - p * p));
+  if (!(d < q)) return std::nullopt;  // X would be at (or beyond) c: insert the circumcentre itself
+  return model_.exp(M, model_.tangentToward(M, c), d);
 }
 
 RefineResult Refiner::run() {
@@ -618,6 +771,13 @@ RefineResult Refiner::run() {
       const int e = segmentQueue_.front();
       segmentQueue_.pop_front();
       processSegment(e);
+      continue;
+    }
+    if (!frontQueue_.empty()) {
+      const int f = frontQueue_.top().second;
+      frontQueue_.pop();
+      frontQueued_[f] = 0;
+      processFace(f);
       continue;
     }
     if (faceQueue_.empty()) break;

@@ -3,6 +3,7 @@
 
 #include "corner_angle.h"
 
+#include <cmath>
 #include <string>
 
 #include "conformesh/intrinsic/errors.h"
@@ -15,13 +16,42 @@ using intrinsic::HalfedgeMesh;
 using intrinsic::IntrinsicTriangulation;
 using intrinsic::kInvalid;
 
+namespace {
+
+// Euclidean third vertex: with L = |AB|, a = |AX|, b = |BX|, X = A + x·u + y·u⊥ where x = (L² + a² − b²) / (2L) is the
+// projection on u = (B − A)/|B − A| and y = 2·area / L its height (area by Kahan's Heron: accurate for needles). The
+// coordinates carry an absolute error of a few ulps of the side lengths, as the rotate-by-the-angle construction does.
+Vec3 euclideanThird(const Vec3& A, const Vec3& B, double L, double a, double b) {
+  const double x = (L * L + a * a - b * b) / (2 * L), y = detail::fourAreaEuclidean(L, a, b) / (2 * L);
+  // The direction is normalized by the stored length L rather than the layout's |B − A| (they differ by round-off):
+  // this spares a hypot in the innermost loop of every walk.
+  const double ux = (B.x() - A.x()) / L, uy = (B.y() - A.y()) / L;
+  return Vec3(A.x() + x * ux - y * uy, A.y() + x * uy + y * ux, 1.0);
+}
+
+}  // namespace
+
 std::array<Vec3, 3> layoutAtHalfedge(const IntrinsicTriangulation& tri, const BackgroundModel& model, int h) {
   const int k = h % 3;
   std::array<Vec3, 3> c;
   c[k] = BackgroundModel::origin();
+  if (tri.background == intrinsic::Background::Euclidean) {
+    const double L = tri.length(h), a = tri.length(HalfedgeMesh::prev(h)), b = tri.length(HalfedgeMesh::next(h));
+    c[(k + 1) % 3] = Vec3(L, 0, 1);
+    c[(k + 2) % 3] = Vec3((L * L + a * a - b * b) / (2 * L), detail::fourAreaEuclidean(L, a, b) / (2 * L), 1.0);
+    return c;
+  }
   c[(k + 1) % 3] = model.polar(tri.length(h), 0.0);
   c[(k + 2) % 3] = model.polar(tri.length(HalfedgeMesh::prev(h)), fastCornerAngle(tri, h));
   return c;
+}
+
+Vec3 unfoldThirdVertex(const IntrinsicTriangulation& tri, const BackgroundModel& model, int g, const Vec3& tailG,
+                       const Vec3& tipG) {
+  if (tri.background == intrinsic::Background::Euclidean)
+    return euclideanThird(tailG, tipG, tri.length(g), tri.length(HalfedgeMesh::prev(g)),
+                          tri.length(HalfedgeMesh::next(g)));
+  return model.thirdVertex(tailG, tipG, fastCornerAngle(tri, g), tri.length(HalfedgeMesh::prev(g)));
 }
 
 std::array<Vec3, 3> layoutFace(const IntrinsicTriangulation& tri, const BackgroundModel& model, int f) {
@@ -89,7 +119,7 @@ TraceResult walk(const IntrinsicTriangulation& tri, const BackgroundModel& model
     face = HalfedgeMesh::face(g);
     P[kg] = Q;
     P[(kg + 1) % 3] = Pp;
-    P[(kg + 2) % 3] = model.thirdVertex(Q, Pp, fastCornerAngle(tri, g), tri.length(HalfedgeMesh::prev(g)));
+    P[(kg + 2) % 3] = unfoldThirdVertex(tri, model, g, Q, Pp);
     exitMask = 7u & ~(1u << kg);
   }
 }

@@ -21,7 +21,12 @@ constexpr double kTwoPi = 2 * M_PI;
 
 double Signposts::reduce(int v, double a) const {
   const double p = period[v];
-  a = std::fmod(a, p);
+  // Updates turn an angle in [0, p) by less than one period, so one conditional shift usually suffices (a − p is exact
+  // for a in [p, 2p] by Sterbenz's lemma; a + p for a small negative a rounds by at most half an ulp of p, far below
+  // the angles' own round-off); fmod handles anything else. This runs several times per insertion and flip.
+  if (a >= p) a -= p;
+  if (a < 0) a += p;
+  if (a < 0 || a >= p) a = std::fmod(a, p);
   if (a < 0) a += p;
   if (a >= p) a = 0;  // fmod of a tiny negative number can round to p
   return a;

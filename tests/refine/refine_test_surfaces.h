@@ -162,6 +162,36 @@ inline DiskSurface disk(int rings) {
   return s;
 }
 
+// === a planar point set's Delaunay triangulation, by brute force (the empty-circumcircle test over all triples; for
+// the handful of points of a test domain). `points` must be in general position except for the convex hull's vertices;
+// the hull is the domain's boundary, so collinear hull points must not occur either.
+inline DiskSurface planarDelaunay(const std::vector<Eigen::Vector2d>& points) {
+  intrinsic::MeshData d;
+  const int n = static_cast<int>(points.size());
+  d.nVertices = n;
+  for (const auto& p : points) d.positions.emplace_back(p.x(), p.y(), 0.0);
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      for (int k = j + 1; k < n; ++k) {
+        const Eigen::Vector2d a = points[i], u = points[j] - a, v = points[k] - a;
+        const double cross = u.x() * v.y() - u.y() * v.x();
+        if (std::abs(cross) < 1e-14) continue;
+        const Eigen::Vector2d c = a + Eigen::Vector2d(v.y() * u.squaredNorm() - u.y() * v.squaredNorm(),
+                                                      u.x() * v.squaredNorm() - v.x() * u.squaredNorm()) /
+                                          (2 * cross);
+        const double R = (a - c).norm();
+        bool empty = true;
+        for (int m = 0; m < n && empty; ++m)
+          if (m != i && m != j && m != k && (points[m] - c).norm() < R * (1 - 1e-12)) empty = false;
+        if (!empty) continue;
+        if (cross > 0)
+          d.faces.push_back({i, j, k});
+        else
+          d.faces.push_back({i, k, j});
+      }
+  return {intrinsic::toTriangulation(d), points};
+}
+
 // === planar annulus 0.5 < |z| < 1 (the library's log-polar grid): a circle domain with one hole.
 inline DiskSurface annulus(int rings) {
   intrinsic::AnnulusOptions o;

@@ -55,6 +55,13 @@ struct RefineOptions {
   // bounds, usually fewer vertices when shape drives the refinement (grading); off by default, as the paper inserts
   // circumcentres. Ignored in curved backgrounds.
   bool offCenters = false;
+  // Split a triangle that is bad by SIZE only (not by shape) at Rebay's frontal point instead of its circumcentre: on
+  // the bisector of its longest edge shared with a triangle that already meets its size target, at the apex of the
+  // isosceles triangle of circumradius ε·e^(−λ) on that edge (never beyond the circumcentre). Meshes grow from good
+  // regions in near-equilateral triangles of the target size: higher mean smallest angle, fewer vertices for the same
+  // ε. Same bounds (they are the stopping criterion) and the same termination argument (the point lies inside the
+  // bad triangle's empty circumdisk, at least the target size away from every vertex). All backgrounds.
+  bool frontal = false;
   // A loop counts as cocircular when every vertex of its layout lies within this distance (relative to the radius) of
   // the fitted circle. 1e-8 is above the round-off of laying out a loop of 10⁶ edges by lengths and turning
   // angles (headings accumulate ~10⁶ · 1e-16 rad, i.e. ~1e-10) and far below any visible departure from a circle.
@@ -75,6 +82,7 @@ struct RefineStatistics {
   std::int64_t circumcenterInsertions = 0;
   std::int64_t centroidInsertions = 0;  // hyperbolic triangles without a circumcircle
   std::int64_t offCenterInsertions = 0;
+  std::int64_t frontalInsertions = 0;
   std::int64_t boundarySplits = 0;
   std::int64_t rejectedCircumcenters = 0;  // outside the domain or encroaching: a boundary edge was split instead
   std::int64_t flips = 0;

@@ -50,4 +50,10 @@ std::array<Vec3, 3> layoutFace(const intrinsic::IntrinsicTriangulation& tri, con
 // Layout of face(h) with tail(h) at the origin and tip(h) on the positive x axis, as corners in face order.
 std::array<Vec3, 3> layoutAtHalfedge(const intrinsic::IntrinsicTriangulation& tri, const BackgroundModel& model, int h);
 
+// The third corner of face(g) (the tail of prev(g)), unfolded on the left of g given the layout positions of tail(g)
+// and tip(g). The Euclidean background uses the law of cosines (no trigonometric function: this is the innermost
+// step of every walk); curved backgrounds rotate by the corner angle and follow the exponential map.
+Vec3 unfoldThirdVertex(const intrinsic::IntrinsicTriangulation& tri, const BackgroundModel& model, int g,
+                       const Vec3& tailG, const Vec3& tipG);
+
 }  // namespace conformesh::refine
