@@ -28,6 +28,7 @@ struct ConvergenceArgs {
   int levels = 0;
   double ratio = 1.4142135623730951;
   int t0Resolution = 10;
+  std::string diskTarget = "auto";
   std::string prefix = "convergence";
   bool json = false, noPlot = false;
 };
@@ -63,6 +64,7 @@ void run(const ConvergenceArgs& a) {
   }
   o.remesh.ratioBound = a.ratio;
   o.remesh.t0Resolution = a.t0Resolution;
+  o.remesh.diskTarget = refine::parseDiskTarget(a.diskTarget);
   o.progress = [](const std::string& s) { progress(s); };
   const refine::ConvergenceStudy study = refine::runConvergenceStudy(*metric, o);
 
@@ -158,6 +160,10 @@ void registerConvergenceCommand(CLI::App& app) {
   sub->add_option("--levels", a->levels, "Use the first N counts of the paper's Table 2 (2..11)");
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (default sqrt(2))");
   sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of T0, shared by all meshes (default 10)");
+  sub->add_option("--disk-target", a->diskTarget,
+                  "Disk charts: 'circle' maps to the unit disk; 'keep-boundary' flattens keeping the boundary lengths "
+                  "(corners keep their angles); 'auto' (default) keeps the boundary of rectangle charts")
+      ->check(CLI::IsMember({"auto", "circle", "keep-boundary"}));
   sub->add_option("-o,--output", a->prefix, "Prefix of the files written (default: convergence)");
   sub->add_flag("--json", a->json, "Print the table and orders as JSON");
   sub->add_flag("--no-plot", a->noPlot, "Do not draw the PNG plots");

@@ -27,6 +27,7 @@ struct RemeshArgs {
   bool uniform = false;
   int t0Resolution = 0;
   std::string output, vtk;
+  std::string diskTarget = "auto";
   bool json = false, noCheck = false, ascii = false;
   std::string region = "ball";
 };
@@ -41,6 +42,7 @@ void run(const RemeshArgs& a) {
   o.progress = [](const std::string& s) { progress(s); };
   const refine::RemeshResult r = refine::remeshMetric(*metric, o);
   intrinsic::MeshData data = refine::toMeshData(r, *metric, a.epsilon);
+  o.diskTarget = refine::parseDiskTarget(a.diskTarget);
 
   nlohmann::json j = {{"metric", metric->description()},
                       {"eps", a.epsilon},
@@ -50,6 +52,7 @@ void run(const RemeshArgs& a) {
                       {"refinement", refineStatisticsJson(r.refinement)},
                       {"quality_uniformized", qualityJson(r.uniformQuality)},
                       {"quality", qualityJson(r.quality)},
+                      {"disk_target", refine::toString(r.diskTarget)},
                       {"inverted_triangles", r.invertedTriangles},
                       {"total_area", intrinsic::totalArea(r.mesh)},
                       {"seconds",
@@ -130,6 +133,11 @@ void registerRemeshCommand(CLI::App& app) {
   sub->add_option("--region", a->region, "Regions of the check: ball (default) or union (Theorem 3.4's unions)")
       ->check(CLI::IsMember({"ball", "union"}));
   sub->add_flag("--ascii", a->ascii, "Write ASCII PLY instead of binary");
+  sub->add_option("--disk-target", a->diskTarget,
+                  "Disk charts: 'circle' maps to the unit disk; 'keep-boundary' flattens keeping the boundary lengths "
+                  "(corners keep their angles, lambda = 0 on the boundary); 'auto' (default) keeps the boundary of "
+                  "rectangle charts, which have corners")
+      ->check(CLI::IsMember({"auto", "circle", "keep-boundary"}));
   sub->callback([a] { run(*a); });
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "conformesh/intrinsic/boundary_flattening.h"
 #include "conformesh/intrinsic/curvature.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric_quadrature.h"
@@ -41,17 +42,43 @@ Eigen::Vector3d boundaryImage(const ChartDomain& d, const Eigen::Vector3d& xi, c
 
 // Refinement only adds vertices, so T0 must be coarser than the output: aim T0 at about a quarter of the output's
 // expected size (area / (1.1 ε²) vertices, the density Delaunay refinement reaches; measured in
-// convergence_study.cpp), i.e. resolution √(N/40) for an icosahedral sphere chart (10 r² vertices), clamped to
-// [8, 32] so that the discrete conformal map stays accurate and the flow cheap.
-int automaticT0Resolution(const SmoothMetric& metric, double epsilon) {
+// convergence_study.cpp), clamped to resolutions [8, 32] so that the discrete conformal map stays accurate and the flow
+// cheap. Vertex counts grow like resolution² for every chart: an icosahedral sphere chart has 10 r² + 2 vertices, so
+// r = √(N/40); other charts (disks, and grids whose u-count follows the metric's aspect ratio) are probed once at
+// resolution 8 — a few hundred vertices, milliseconds — and scaled: r = 8·√(N/4 / n₈).
+int automaticT0Resolution(const SmoothMetric& metric, double epsilon, const DiscretizationOptions& options) {
   if (!(epsilon > 0) || !std::isfinite(epsilon)) return 32;
   QuadratureOptions q;
   q.absoluteTolerance = q.relativeTolerance = 1e-6;
   const double expected = metricArea(metric, q).value / (1.1 * epsilon * epsilon);
-  return std::clamp(static_cast<int>(std::lround(std::sqrt(expected / 40))), 8, 32);
+  double r = std::sqrt(expected / 40);
+  if (metric.domain().shape() != ChartShape::Sphere) {
+    DiscretizationOptions probe = options;
+    probe.resolution = 8;
+    r = 8 * std::sqrt(expected / 4 / discretizeMetric(metric, probe).nVertices);
+  }
+  return std::clamp(static_cast<int>(std::lround(r)), 8, 32);
 }
 
 }  // namespace
+
+std::string toString(DiskTarget target) {
+  switch (target) {
+    case DiskTarget::Auto:
+      return "auto";
+    case DiskTarget::Circle:
+      return "circle";
+    case DiskTarget::KeepBoundary:
+      return "keep-boundary";
+  }
+  return "unknown";
+}
+
+DiskTarget parseDiskTarget(const std::string& name) {
+  for (DiskTarget t : {DiskTarget::Auto, DiskTarget::Circle, DiskTarget::KeepBoundary})
+    if (toString(t) == name) return t;
+  throw InputError("disk target '" + name + "' is not one of auto, circle, keep-boundary");
+}
 
 UniformizedMetric uniformizeMetric(const SmoothMetric& metric, const RemeshOptions& options) {
   auto say = [&](const std::string& s) {
@@ -63,7 +90,8 @@ UniformizedMetric uniformizeMetric(const SmoothMetric& metric, const RemeshOptio
   // === 1. discretize: T0 with chart coordinates per vertex
   auto t = std::chrono::steady_clock::now();
   DiscretizationOptions disc = options.discretization;
-  disc.resolution = options.t0Resolution > 0 ? options.t0Resolution : automaticT0Resolution(metric, options.epsilon);
+  disc.resolution =
+      options.t0Resolution > 0 ? options.t0Resolution : automaticT0Resolution(metric, options.epsilon, disc);
   say("discretizing " + metric.description() + " at resolution " + std::to_string(disc.resolution));
   const MeshData t0Data = discretizeMetric(metric, disc);
   ConversionReport conversion;
@@ -85,8 +113,21 @@ UniformizedMetric uniformizeMetric(const SmoothMetric& metric, const RemeshOptio
   t = std::chrono::steady_clock::now();
   UniformizationOptions uni = options.uniformization;
   if (!uni.progress) uni.progress = options.progress;
-  say("uniformizing T0 (" + std::to_string(n0) + " vertices) by discrete Ricci flow");
-  out.uniformization = uniformize(out.t0, uni);
+  // A chart with one boundary loop is a disk. The rectangle's four corners would be z^{π/α} singularities of the map
+  // to the unit disk, so by default such a chart keeps its boundary (boundary_flattening.h); a polar disk chart's
+  // boundary is smooth and goes to the circle.
+  const std::vector<ComponentTopology> topology = out.t0.mesh.components();
+  const bool disk = topology.size() == 1 && topology[0].genus == 0 && topology[0].boundaryLoops == 1;
+  out.diskTarget = options.diskTarget;
+  if (out.diskTarget == DiskTarget::Auto)
+    out.diskTarget = disk && domain.shape() == ChartShape::Rectangle ? DiskTarget::KeepBoundary : DiskTarget::Circle;
+  if (out.diskTarget == DiskTarget::KeepBoundary) {
+    say("flattening T0 (" + std::to_string(n0) + " vertices) by discrete Ricci flow, boundary lengths kept");
+    out.uniformization = flattenKeepingBoundary(out.t0, uni);
+  } else {
+    say("uniformizing T0 (" + std::to_string(n0) + " vertices) by discrete Ricci flow");
+    out.uniformization = uniformize(out.t0, uni);
+  }
   out.uniformizeSeconds = secondsSince(t);
   return out;
 }
@@ -117,6 +158,8 @@ RemeshResult remeshUniformized(const UniformizedMetric& prepared, const SmoothMe
   out.t0Vertices = n0;
   out.t0Faces = t0.mesh.nFaces();
   out.uniformization = u.report;
+  out.diskTarget = prepared.diskTarget;
+  const bool keepBoundary = prepared.diskTarget == DiskTarget::KeepBoundary;
   out.seconds.discretize = prepared.discretizeSeconds;
   out.seconds.uniformize = prepared.uniformizeSeconds;
   auto t = std::chrono::steady_clock::now();
@@ -126,6 +169,8 @@ RemeshResult remeshUniformized(const UniformizedMetric& prepared, const SmoothMe
   ref.epsilon = options.epsilon;
   ref.ratioBound = options.ratioBound;
   if (!options.uniform) ref.lambda = u.lambda;
+  // The kept-boundary domain is the polygon of T0's boundary chords: split its sides on the chords.
+  if (keepBoundary) ref.boundarySplit = BoundarySplit::Geodesic;
   if (!ref.progress && options.progress)
     ref.progress = [&](const RefineProgress& p) {
       say("refining: " + std::to_string(p.vertices) + " vertices, " + std::to_string(p.queuedTriangles) +
@@ -155,14 +200,19 @@ RemeshResult remeshUniformized(const UniformizedMetric& prepared, const SmoothMe
   for (int v = n0; v < n1; ++v) {
     const InputLocation& loc = refined.locations[v];
     const Eigen::Vector3d& b = loc.bary;
-    int negative = -1;
+    int negative = -1;  // the most negative coordinate, if any
     for (int k = 0; k < 3; ++k)
-      if (b[k] < 0) negative = k;
+      if (b[k] < 0 && (negative < 0 || b[k] < b[negative])) negative = k;
+    // On the kept-boundary polygon a boundary vertex lies ON a T0* chord; its coordinate 0 may come out as round-off
+    // of either sign (1e-9 is the correspondence's own tolerance, mapToInput). Such a point goes through the
+    // correspondence, which keeps a boundary chord on the same T0 chord (u = 0 at both ends: the map is affine there).
+    if (keepBoundary && negative >= 0 && b[negative] > -1e-9) negative = -1;
     if (negative < 0) {
       FacePoint p;
       p.face = loc.face;
-      const double s = b.sum();
-      p.bary = {b[0] / s, b[1] / s, b[2] / s};
+      const Eigen::Vector3d c = b.cwiseMax(0.0);
+      const double s = c.sum();
+      p.bary = {c[0] / s, c[1] / s, c[2] / s};
       onUniform.push_back(p);
       interiorVertex.push_back(v);
       continue;
@@ -222,7 +272,15 @@ RemeshResult remeshUniformized(const UniformizedMetric& prepared, const SmoothMe
     const Eigen::Vector3d& xa = out.reference[m1.tail(h)];
     out.mesh.edgeLengths[e] = chartCurveLength(metric, xa, unwrapNear(domain, xa, out.reference[m1.tip(h)]), disc);
   }
-  validateLengths(out.mesh, "remeshed surface");
+  // Lengths of chart-straight curves can fail the triangle inequality where T0 is too coarse for the metric: a T1*
+  // triangle whose three vertices pull back onto one chart-straight line (e.g. three T0 grid vertices joined by a
+  // flipped edge) is degenerate. That is a failure of the approximation, not of the input.
+  try {
+    validateLengths(out.mesh, "remeshed surface");
+  } catch (const InputError& e) {
+    throw ConvergenceError(std::string(e.what()) + " (the pull-back through T0 of " + std::to_string(n0) +
+                           " vertices is too coarse for this metric here: raise --t0-resolution or lower --eps)");
+  }
 
   // The map back is a homeomorphism only if no triangle's image is inverted: compare with T0's orientation.
   double t0Sign = 0;

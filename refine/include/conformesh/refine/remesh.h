@@ -21,6 +21,23 @@
 
 namespace conformesh::refine {
 
+// What a chart with one boundary loop (a topological disk) is uniformized to.
+enum class DiskTarget {
+  // KeepBoundary when the chart has corners (a Rectangle chart: a Bézier patch, a graph over a square), Circle
+  // otherwise (a polar Disk chart, whose boundary is smooth).
+  Auto,
+  // The unit disk (uniformization.h, CircleDomain); refinement splits the boundary on the circle. At a boundary corner
+  // of angle α the conformal map behaves like z^{π/α}, so λ is unbounded there (docs/refinement.md).
+  Circle,
+  // The flat metric with the boundary's lengths kept (boundary_flattening.h): λ = 0 on the boundary, bounded, every
+  // corner keeps its angle; the domain is the polygon of T0's boundary chords and refinement splits its sides at their
+  // midpoints (BoundarySplit::Geodesic).
+  KeepBoundary,
+};
+std::string toString(DiskTarget target);
+// Parses "auto", "circle", "keep-boundary"; InputError naming the value otherwise.
+DiskTarget parseDiskTarget(const std::string& name);
+
 struct RemeshOptions {
   // Size bound ε in the ORIGINAL metric: circumradii of the output are ≈ ε or less (paper §4.2.3: the uniformized
   // bound ε·e^(−λ) pulls back to ε). Required, > 0.
@@ -31,9 +48,12 @@ struct RemeshOptions {
   bool uniform = false;
   // T0: resolution of the discretization of the chart (DiscretizationOptions::resolution); the discrete conformal map
   // of T0 is the only approximation of the smooth one, so it should be fine enough that its angle distortion is well
-  // below the refinement's angle bound. 0 = automatic: about a quarter of the output's expected vertex count, between
-  // 8 and 32 (≈ 650 to 10⁴ vertices for sphere charts), since refinement only adds vertices to T0.
+  // below the refinement's angle bound. 0 = automatic: about a quarter of the output's expected vertex count, at a
+  // resolution between 8 and 32 (≈ 650 to 10⁴ vertices for sphere charts; other charts are sized by a probe at
+  // resolution 8), since refinement only adds vertices to T0.
   int t0Resolution = 0;
+  // Target of the uniformization when the chart is a topological disk (ignored for closed charts).
+  DiskTarget diskTarget = DiskTarget::Auto;
   intrinsic::DiscretizationOptions discretization;
   intrinsic::UniformizationOptions uniformization;
   // Passed through to the refinement (epsilon, ratioBound and lambda are set from the fields above).
@@ -58,6 +78,7 @@ struct RemeshResult {
   int t0Vertices = 0, t0Faces = 0;
   int invertedTriangles = 0;  // output triangles whose image in the chart's reference surface is inverted (should be 0)
   intrinsic::UniformizationReport uniformization;
+  DiskTarget diskTarget = DiskTarget::Circle;  // as in UniformizedMetric
   RefineStatistics refinement;
   QualityReport uniformQuality;  // of T1* in its background metric
   QualityReport quality;         // of T1 in the original metric
@@ -73,6 +94,9 @@ struct UniformizedMetric {
   std::vector<Eigen::Vector3d> t0Reference;  // per T0 vertex: its point on the chart's reference surface
   std::vector<Eigen::Vector2d> t0Chart;      // per T0 vertex: chart coordinates
   intrinsic::Uniformization uniformization;
+  // The disk target used (Auto resolved; Circle also stands for charts without boundary, where it plays no role).
+  // KeepBoundary refines with BoundarySplit::Geodesic.
+  DiskTarget diskTarget = DiskTarget::Circle;
   double discretizeSeconds = 0, uniformizeSeconds = 0;
 };
 UniformizedMetric uniformizeMetric(const intrinsic::SmoothMetric& metric, const RemeshOptions& options);
