@@ -12,6 +12,7 @@
 #include "conformesh/intrinsic/metric_families.h"
 #include "conformesh/intrinsic/vtk_writer.h"
 #include "conformesh/refine/remesh.h"
+#include "remesh_mesh.h"
 #include "report_json.h"
 
 namespace conformesh::apps {
@@ -26,33 +27,35 @@ struct RemeshArgs {
   double ratio = 1.4142135623730951;
   bool uniform = false;
   int t0Resolution = 0;
-  std::string output, vtk;
   std::string diskTarget = "auto";
+  std::string output, vtk;
   bool json = false, noCheck = false, ascii = false;
   std::string region = "ball";
 };
 
 void run(const RemeshArgs& a) {
+  if (isMeshFilePath(a.family))  // a mesh file: pull back through its faces (remesh_mesh.h)
+    return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii});
   const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetric("remesh", a.family, a.params, a.field);
   refine::RemeshOptions o;
   o.epsilon = a.epsilon;
   o.ratioBound = a.ratio;
   o.uniform = a.uniform;
   o.t0Resolution = a.t0Resolution;
+  o.diskTarget = refine::parseDiskTarget(a.diskTarget);
   o.progress = [](const std::string& s) { progress(s); };
   const refine::RemeshResult r = refine::remeshMetric(*metric, o);
   intrinsic::MeshData data = refine::toMeshData(r, *metric, a.epsilon);
-  o.diskTarget = refine::parseDiskTarget(a.diskTarget);
 
   nlohmann::json j = {{"metric", metric->description()},
                       {"eps", a.epsilon},
                       {"ratio_bound", a.ratio},
                       {"t0", {{"vertices", r.t0Vertices}, {"faces", r.t0Faces}}},
                       {"uniformization", uniformizationJson(r.uniformization)},
+                      {"disk_target", refine::toString(r.diskTarget)},
                       {"refinement", refineStatisticsJson(r.refinement)},
                       {"quality_uniformized", qualityJson(r.uniformQuality)},
                       {"quality", qualityJson(r.quality)},
-                      {"disk_target", refine::toString(r.diskTarget)},
                       {"inverted_triangles", r.invertedTriangles},
                       {"total_area", intrinsic::totalArea(r.mesh)},
                       {"seconds",
@@ -118,14 +121,23 @@ void registerRemeshCommand(CLI::App& app) {
       "vertex v, the sum of angle deficits in the geodesic ball B(v, r), r = 0.05*sqrt(area), against the integral\n"
       "of the metric's K over the same region (paper eq. 5); e_G is their mean absolute difference.\n"
       "Families and their parameters: conformesh discretize --list.\n"
+      "A mesh file (.off/.obj/.ply) as INPUT: uniformize it, refine, pull back through its faces; output lengths\n"
+      "are the developed lengths of the edges' image paths on the input, and the check compares the output's\n"
+      "deficits with the input's own over the same balls (docs/cli.md, remesh).\n"
       "Example: conformesh remesh kerr-newman --param a=0.99 --eps 0.05 -o kerr.ply --vtk kerr.vtk");
-  sub->add_option("family", a->family, "Metric family (see `conformesh discretize --list`)");
+  sub->add_option("family", a->family,
+                  "Metric family (see `conformesh discretize --list`), or a mesh file (.off/.obj/.ply)");
   sub->add_option("--field", a->field, "Sampled metric field file instead of a family (format: docs/metrics.md)");
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
   sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric (required)")->required();
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (default sqrt(2): 20.7 deg)");
   sub->add_flag("--uniform", a->uniform, "Ignore the conformal factor (uniform in the uniformized domain)");
   sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of the initial triangulation T0 (default: automatic from eps, 8..32)");
+  sub->add_option("--disk-target", a->diskTarget,
+                  "Disk charts: 'circle' maps to the unit disk; 'keep-boundary' flattens keeping the boundary lengths "
+                  "(corners keep their angles, lambda = 0 on the boundary); 'auto' (default) keeps the boundary of "
+                  "rectangle charts, which have corners")
+      ->check(CLI::IsMember({"auto", "circle", "keep-boundary"}));
   sub->add_option("-o,--output", a->output, "Output PLY (edge lengths, vertex fields)")->required();
   sub->add_option("--vtk", a->vtk, "Also write legacy VTK for ParaView");
   sub->add_flag("--json", a->json, "Print the report as JSON");
@@ -133,11 +145,6 @@ void registerRemeshCommand(CLI::App& app) {
   sub->add_option("--region", a->region, "Regions of the check: ball (default) or union (Theorem 3.4's unions)")
       ->check(CLI::IsMember({"ball", "union"}));
   sub->add_flag("--ascii", a->ascii, "Write ASCII PLY instead of binary");
-  sub->add_option("--disk-target", a->diskTarget,
-                  "Disk charts: 'circle' maps to the unit disk; 'keep-boundary' flattens keeping the boundary lengths "
-                  "(corners keep their angles, lambda = 0 on the boundary); 'auto' (default) keeps the boundary of "
-                  "rectangle charts, which have corners")
-      ->check(CLI::IsMember({"auto", "circle", "keep-boundary"}));
   sub->callback([a] { run(*a); });
 }
 

@@ -1,0 +1,24 @@
+// remesh_mesh.h — the mesh-file branch of `conformesh remesh`: when INPUT names a mesh file (.off, .obj, .ply), the
+// pipeline is uniformize → refine → pull back through the input faces (refine/mesh_remesh.h), and the curvature
+// check compares the output's angle deficits with the input's own over the same balls. Parsing and printing only.
+#pragma once
+
+#include <string>
+
+namespace conformesh::apps {
+
+// True when `input` ends in .off, .obj or .ply (any case): `remesh` then reads it as a mesh, not a family name.
+bool isMeshFilePath(const std::string& input);
+
+struct MeshRemeshCliArgs {
+  std::string input;
+  double epsilon = 0;
+  double ratio = 1.4142135623730951;
+  bool uniform = false;
+  std::string output, vtk;
+  bool json = false, noCheck = false, ascii = false;
+};
+
+void runRemeshMesh(const MeshRemeshCliArgs& args);
+
+}  // namespace conformesh::apps

@@ -1,0 +1,83 @@
+// End-to-end tests of `conformesh remesh MESHFILE`: CGAL's genus-2 eight.off remeshed to PLY (edge lengths, input face
+// and barycentric coordinates per vertex) and VTK, the JSON report (Gauss–Bonnet, inverted triangles, the curvature
+// check against the input's own deficits), and one-line errors for a bad mesh file.
+#include <catch2/catch.hpp>
+
+#include "../support/cli_runner.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "conformesh/intrinsic/curvature.h"
+#include "conformesh/intrinsic/mesh_io.h"
+
+namespace fs = std::filesystem;
+using namespace conformesh::intrinsic;
+
+namespace {
+using Run = conformesh::testing::CliRun;
+fs::path dir() {
+  return conformesh::testing::scratchDir();
+}
+Run runCli(const std::string& args) {
+  return conformesh::testing::runConformesh(args);
+}
+const std::string kEight = std::string(CONFORMESH_TEST_DATA_DIR) + "/eight.off";
+}  // namespace
+
+TEST_CASE("remesh MESHFILE: eight.off to PLY and VTK with the JSON report") {
+  const fs::path out = dir() / "eight_remeshed.ply", vtk = dir() / "eight_remeshed.vtk";
+  const Run r = runCli("-q remesh " + kEight + " --eps 0.03 -o " + out.string() + " --vtk " + vtk.string() + " --json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["input_mesh"]["vertices"] == 315);
+  CHECK(j["uniformization"]["target"] == "hyperbolic");
+  CHECK(j["inverted_triangles"] == 0);
+  CHECK(std::abs(j["quality"]["gauss_bonnet_residual"].get<double>()) < 1e-9);
+  CHECK(j["quality_uniformized"]["min_angle_deg"].get<double>() >= 20.7);
+  CHECK(std::abs(j["gaussian_curvature_measure"]["smooth_total_curvature"].get<double>() + 4 * M_PI) < 1e-9);
+  // The file: the output's own lengths, positions on the input, and each vertex's input face.
+  const MeshData d = readMesh(out.string());
+  CHECK(d.nVertices == j["quality"]["vertices"].get<int>());
+  CHECK(!d.positions.empty());
+  CHECK(d.edges.size() == 3 * d.faces.size() / 2);
+  for (const char* p : {"input_face", "input_b0", "input_b1", "input_b2", "lambda", "curvature", "error"})
+    CHECK(d.vertexProperties.count(p) == 1);
+  // The first 315 vertices are the input's: face and barycentric coordinates pick one of its corners.
+  const auto& b0 = d.vertexProperties.at("input_b0");
+  const auto& b1 = d.vertexProperties.at("input_b1");
+  const auto& b2 = d.vertexProperties.at("input_b2");
+  for (int v = 0; v < 315; ++v) CHECK(std::max({b0[v], b1[v], b2[v]}) == 1.0);
+  // Read back as a triangulation, the file's lengths satisfy Gauss–Bonnet for χ = −2.
+  CHECK(std::abs(curvatureTotals(toTriangulation(d)).gaussBonnetResidual) < 1e-9);
+  CHECK(fs::file_size(vtk) > 0);
+}
+
+TEST_CASE("remesh MESHFILE: human-readable report") {
+  const Run r = runCli("-q remesh " + kEight + " --eps 0.05 --no-check -o " + (dir() / "e.ply").string());
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("hyperbolic") != std::string::npos);
+  CHECK(r.out.find("smallest angle, input metric") != std::string::npos);
+  CHECK(r.out.find("Gauss-Bonnet residual") != std::string::npos);
+}
+
+TEST_CASE("remesh MESHFILE errors: one line naming the file and the element") {
+  const fs::path bad = dir() / "fin.off";
+  std::ofstream(bad) << "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n";
+  Run r = runCli("remesh " + bad.string() + " --eps 0.1 -o " + (dir() / "x.ply").string());
+  CHECK(r.status == 1);
+  CHECK(r.err.find("fin.off") != std::string::npos);
+  CHECK(r.err.find("edge") != std::string::npos);
+  r = runCli("remesh " + (dir() / "missing.off").string() + " --eps 0.1 -o " + (dir() / "x.ply").string());
+  CHECK(r.status == 1);
+  CHECK(r.err.find("missing.off") != std::string::npos);
+  r = runCli("remesh " + kEight + " --eps 0 -o " + (dir() / "x.ply").string());
+  CHECK(r.status == 1);
+  CHECK(r.err.find("--eps") != std::string::npos);
+}
