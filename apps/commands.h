@@ -13,5 +13,6 @@ void registerRemeshCommand(CLI::App& app);
 void registerConvergenceCommand(CLI::App& app);
 void registerUniformizeCommand(CLI::App& app);
 void registerRefineCommand(CLI::App& app);
+void registerLayoutCommand(CLI::App& app);
 
 }  // namespace conformesh::apps

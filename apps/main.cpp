@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   conformesh::apps::registerConvergenceCommand(app);
   conformesh::apps::registerUniformizeCommand(app);
   conformesh::apps::registerRefineCommand(app);
+  conformesh::apps::registerLayoutCommand(app);
 
   try {
     app.parse(argc, argv);
