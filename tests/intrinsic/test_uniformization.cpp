@@ -289,10 +289,10 @@ TEST_CASE("an ellipsoid of revolution maps to the sphere close to its conformal 
   }
   INFO("angle errors " << std::exp(logErr[0]) << " " << std::exp(logErr[1]) << " " << std::exp(logErr[2]) << ", order "
                        << sxy / sxx);
-  // Measured: 5.0e-4, 2.5e-4, 2.9e-4 (order 0.4): on these icosphere-based meshes the error stalls near 3e-4 instead
-  // of converging (the maximum sits near the equator, away from the 12 degree-5 vertices' images; see
-  // docs/ricci_flow.md §6). The test holds the accuracy that is reached; for points on the sphere itself (c = 1) the
-  // same pipeline reproduces the input to 2e-8.
+  // Measured: 5.0e-4, 2.5e-4, 2.9e-4 (order 0.4): on these z-scaled icospheres the error stalls near 3e-4 (the
+  // maximum sits near the equator; docs/ricci_flow.md §6), while on the ellipsoid family's own chart discretizations the
+  // same comparison converges at order 2 (tests/embedding/test_sphere_layout.cpp): the stall belongs to the meshes. The
+  // test holds the accuracy reached here; for points on the sphere itself (c = 1) the pipeline reproduces them to 2e-8.
   for (double le : logErr) CHECK(std::exp(le) < 6e-4);
 }
 
