@@ -14,5 +14,6 @@ void registerConvergenceCommand(CLI::App& app);
 void registerUniformizeCommand(CLI::App& app);
 void registerRefineCommand(CLI::App& app);
 void registerLayoutCommand(CLI::App& app);
+void registerEmbedCommand(CLI::App& app);
 
 }  // namespace conformesh::apps

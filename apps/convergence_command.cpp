@@ -2,6 +2,7 @@
 // metric: a table (CSV and JSON) of vertices, triangles, circumradii, angles, e_G and time per mesh, the fitted orders,
 // and PNG plots of Figs. 10 (a–d), 11 (a, c) and 12 (histogram) drawn by scripts/plot_convergence.py (matplotlib).
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -66,6 +67,7 @@ void run(const ConvergenceArgs& a) {
   o.remesh.t0Resolution = a.t0Resolution;
   o.remesh.diskTarget = refine::parseDiskTarget(a.diskTarget);
   o.progress = [](const std::string& s) { progress(s); };
+  o.extrinsic = true;  // used when the metric has an embedding
   const refine::ConvergenceStudy study = refine::runConvergenceStudy(*metric, o);
 
   nlohmann::json levels = nlohmann::json::array();
@@ -74,7 +76,7 @@ void run(const ConvergenceArgs& a) {
   if (!csv) throw InputError(csvPath + ": cannot open for writing");
   csv << "target_vertices,vertices,triangles,eps,max_circumradius,mean_circumradius,min_angle_deg,"
          "mean_min_angle_deg,e_G,max_error,fraction_within,inverted_triangles,total_area,gauss_bonnet_residual,"
-         "seconds\n";
+         "seconds,e_H,hausdorff,normal_deviation\n";
   for (const auto& L : study.levels) {
     char row[512];
     std::snprintf(row, sizeof row, "%d,%d,%d,%.10g,%.10g,%.10g,%.6f,%.6f,%.10g,%.10g,%.6f,%d,%.15g,%.3e,%.3f\n",
@@ -82,7 +84,14 @@ void run(const ConvergenceArgs& a) {
                   L.quality.meanCircumradius, L.quality.minAngleDeg, L.quality.meanMinAngleDeg,
                   L.measure.meanAbsoluteError, L.measure.maxAbsoluteError, L.measure.fractionWithinBand,
                   L.invertedTriangles, L.totalArea, L.quality.gaussBonnetResidual, L.seconds);
-    csv << row;
+    csv << std::string(row, std::strlen(row) - 1);
+    // The extrinsic columns (embedding/): empty when the metric has no embedding.
+    if (study.extrinsic)
+      csv << "," << L.meanCurvature.meanAbsoluteError << "," << L.deviation.hausdorffClosest << ","
+          << L.deviation.normalDeviation;
+    else
+      csv << ",,,";
+    csv << "\n";
     levels.push_back({{"target_vertices", L.targetVertices},
                       {"vertices", L.vertices},
                       {"triangles", L.triangles},
@@ -92,6 +101,24 @@ void run(const ConvergenceArgs& a) {
                       {"total_area", L.totalArea},
                       {"gaussian_curvature_measure", curvatureMeasureJson(L.measure, o.measure)},
                       {"seconds", L.seconds}});
+    if (study.extrinsic)
+      levels.back()["extrinsic"] = {{"e_H", L.meanCurvature.meanAbsoluteError},
+                                    {"max_abs_error", L.meanCurvature.maxAbsoluteError},
+                                    {"mean_relative_error", L.meanCurvature.meanRelativeError},
+                                    {"fraction_within", L.meanCurvature.fractionWithinBand},
+                                    {"within_band", o.meanCurvature.withinBand},
+                                    {"histogram_range", o.meanCurvature.histogramRange},
+                                    {"histogram", L.meanCurvature.histogram},
+                                    {"radius", L.meanCurvature.radius},
+                                    {"discrete_total", L.meanCurvature.discreteTotal},
+                                    {"smooth_total", L.meanCurvature.smoothTotal},
+                                    {"hausdorff", L.deviation.hausdorffClosest},
+                                    {"hausdorff_natural", L.deviation.hausdorffNatural},
+                                    {"mean_distance", L.deviation.meanClosest},
+                                    {"normal_deviation", L.deviation.normalDeviation},
+                                    {"mean_normal_deviation", L.deviation.meanNormalDeviation},
+                                    {"normal_deviation_natural", L.deviation.normalDeviationNatural},
+                                    {"flipped_faces", L.deviation.flippedFaces}};
   }
   csv.close();
   nlohmann::json j = {{"metric", study.metric},
@@ -105,6 +132,12 @@ void run(const ConvergenceArgs& a) {
                         {"area_error_vs_mean_circumradius", study.orderAreaVsCircumradius}}},
                       {"levels", levels},
                       {"finest_relative_errors", study.levels.back().measure.relativeError}};
+  if (study.extrinsic) {
+    j["orders"]["e_H_vs_mean_circumradius"] = study.orderMeanCurvatureVsCircumradius;
+    j["orders"]["hausdorff_vs_mean_circumradius"] = study.orderHausdorffVsCircumradius;
+    j["orders"]["normal_deviation_vs_mean_circumradius"] = study.orderNormalDeviationVsCircumradius;
+    j["finest_mean_curvature_relative_errors"] = study.levels.back().meanCurvature.relativeError;
+  }
   std::ofstream(jsonPath) << j.dump(1) << '\n';
   std::vector<std::string> written = {csvPath, jsonPath};
   if (!a.noPlot) {
@@ -119,9 +152,12 @@ void run(const ConvergenceArgs& a) {
       progress("plots skipped: `" + cmd + "` failed (needs python3-matplotlib); the CSV and JSON are written");
     else
       for (const char* s : {"_fig10.png", "_fig11.png", "_fig12.png"}) written.push_back(a.prefix + s);
+    if (!a.noPlot && study.extrinsic && std::filesystem::exists(a.prefix + "_fig13.png"))
+      written.push_back(a.prefix + "_fig13.png");
   }
   if (a.json) {
     j.erase("finest_relative_errors");
+    j.erase("finest_mean_curvature_relative_errors");
     j["written"] = written;
     printJson(j);
     return;
@@ -135,6 +171,18 @@ void run(const ConvergenceArgs& a) {
                 L.quality.meanMinAngleDeg, L.measure.meanAbsoluteError, 100 * L.measure.fractionWithinBand, L.seconds);
   std::printf("fitted orders: e_G ~ R^%.3f, mean R ~ V^%.3f, |area error| ~ R^%.3f\n", study.orderErrorVsCircumradius,
               study.orderCircumradiusVsVertices, study.orderAreaVsCircumradius);
+  if (study.extrinsic) {
+    std::printf("extrinsic (the metric's embedding): e_H over balls of radius 0.08*sqrt(area), "
+                "Hausdorff max|q - pi(q)|, max normal deviation\n");
+    std::printf("%9s %11s %11s %11s %8s\n", "vertices", "e_H", "Hausdorff", "normal dev", "within");
+    for (const auto& L : study.levels)
+      std::printf("%9d %11.4e %11.4e %11.4e %7.1f%%\n", L.vertices, L.meanCurvature.meanAbsoluteError,
+                  L.deviation.hausdorffClosest, L.deviation.normalDeviation,
+                  100 * L.meanCurvature.fractionWithinBand);
+    std::printf("fitted orders: e_H ~ R^%.3f (>= 1), Hausdorff ~ R^%.3f (2), normal deviation ~ R^%.3f (1)\n",
+                study.orderMeanCurvatureVsCircumradius, study.orderHausdorffVsCircumradius,
+                study.orderNormalDeviationVsCircumradius);
+  }
   for (const auto& w : written) std::printf("written: %s\n", w.c_str());
 }
 
@@ -152,6 +200,10 @@ void registerConvergenceCommand(CLI::App& app) {
       "against vertices (-1/2, paper Fig. 10b), area error against mean circumradius (2).\n"
       "Writes PREFIX.csv, PREFIX.json and, with python3-matplotlib, PREFIX_fig10.png (a-d), PREFIX_fig11.png (a, c)\n"
       "and PREFIX_fig12.png (histogram of relative errors on the finest mesh).\n"
+      "When the metric has an embedding in R^3 (sphere, ellipsoid, torus, graphs, patches), also: e_H, the mean\n"
+      "|sum_e |e in B| beta(e) - integral of (k1 + k2) dA| over balls B(v, 0.08*sqrt(area)) (paper eq. 2), the\n"
+      "Hausdorff distance max |q - pi(q)| and the largest normal deviation (radians) between mesh and surface, with\n"
+      "their orders against mean circumradius (>= 1, 2, 1: Theorem 3.4, Lemma 4.9) and PREFIX_fig13.png.\n"
       "Example: conformesh convergence kerr-newman --param a=0.95 --vertices 1k,2k,4k,8k -o kerr95");
   sub->add_option("family", a->family, "Metric family (see `conformesh discretize --list`)");
   sub->add_option("--field", a->field, "Sampled metric field file instead of a family (format: docs/metrics.md)");

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   conformesh::apps::registerUniformizeCommand(app);
   conformesh::apps::registerRefineCommand(app);
   conformesh::apps::registerLayoutCommand(app);
+  conformesh::apps::registerEmbedCommand(app);
 
   try {
     app.parse(argc, argv);

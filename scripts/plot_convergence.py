@@ -4,7 +4,9 @@
 usage: plot_convergence.py STUDY.json PREFIX
 writes PREFIX_fig10.png (a: max circumradius, b: mean circumradius, c: min angle, d: mean min angle, against
 vertices), PREFIX_fig11.png (a: e_G against vertices, c: e_G against mean circumradius, log-log with the fitted
-slope), PREFIX_fig12.png (histogram of relative Gaussian-curvature-measure errors on the finest mesh).
+slope), PREFIX_fig12.png (histogram of relative Gaussian-curvature-measure errors on the finest mesh) and, when the
+metric has an embedding (levels carry "extrinsic"), PREFIX_fig13.png (e_H, Hausdorff distance and normal deviation
+against mean circumradius, log-log with fitted slopes; histogram of relative mean-curvature-measure errors).
 """
 import json
 import sys
@@ -79,6 +81,29 @@ def main():
     fig.suptitle(title + ": Fig. 12")
     fig.tight_layout()
     fig.savefig(prefix + "_fig12.png", dpi=120)
+
+    if all("extrinsic" in L for L in levels):
+        ext = [L["extrinsic"] for L in levels]
+        fig, ax = plt.subplots(1, 4, figsize=(17, 3.8))
+        for a, key, name, expected in zip(ax, ("e_H", "hausdorff", "normal_deviation"),
+                                          ("e_H", "Hausdorff distance", "max normal deviation (rad)"),
+                                          (">= 1", "2", "1")):
+            y = np.array([e[key] for e in ext])
+            a.loglog(rmean, y, "o-")
+            a.set_xlabel("mean circumradius")
+            a.set_ylabel(name)
+            a.set_title("slope %.3f (expected %s)" % (slope(rmean, y), expected))
+            a.grid(alpha=0.3, which="both")
+        relh = np.array(study.get("finest_mean_curvature_relative_errors", []))
+        fin = ext[-1]
+        rng = fin["histogram_range"]
+        ax[3].hist(np.clip(relh, -rng, rng), bins=len(fin["histogram"]), range=(-rng, rng))
+        ax[3].axvspan(-fin["within_band"], fin["within_band"], color="g", alpha=0.1)
+        ax[3].set_xlabel("relative error of the mean curvature measure")
+        ax[3].set_title("%.1f %% within +-%.2f" % (100 * fin["fraction_within"], fin["within_band"]))
+        fig.suptitle(title + ": extrinsic checks (eq. 2, Lemmas 4.8-4.9)")
+        fig.tight_layout()
+        fig.savefig(prefix + "_fig13.png", dpi=120)
 
 
 if __name__ == "__main__":

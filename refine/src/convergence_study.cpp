@@ -1,8 +1,10 @@
-// convergence_study.cpp — a sweep of remeshings at calibrated ε with the curvature-measure check (convergence_study.h).
+// convergence_study.cpp — a sweep of remeshings at calibrated ε with the curvature-measure checks, intrinsic and (with
+// an embedding) extrinsic (convergence_study.h).
 #include "conformesh/refine/convergence_study.h"
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric_quadrature.h"
@@ -36,6 +38,9 @@ ConvergenceStudy runConvergenceStudy(const SmoothMetric& metric, const Convergen
   const UniformizedMetric prepared = uniformizeMetric(metric, base);
   study.uniformization = prepared.uniformization.report;
   study.t0Vertices = prepared.t0.mesh.nVertices();
+  study.extrinsic = options.extrinsic && metric.hasEmbedding();
+  std::unique_ptr<embedding::EmbeddedSurface> surface;
+  if (study.extrinsic) surface = std::make_unique<embedding::EmbeddedSurface>(metric);
 
   // Vertex counts scale like area / (c ε²); c is learnt from each run (≈ 1.1 for Ruppert-quality meshes).
   double c = 1.1;
@@ -70,18 +75,40 @@ ConvergenceStudy runConvergenceStudy(const SmoothMetric& metric, const Convergen
       L.measure.absoluteScale.clear();
       L.measure.relativeError.clear();
     }
+    if (study.extrinsic) {
+      L.meanCurvature = embedding::meanCurvatureMeasure(r.mesh, r.positions, r.reference, *surface,
+                                                        options.meanCurvature);
+      L.deviation = embedding::surfaceDeviation(r.mesh.mesh, r.positions, r.reference, *surface, options.projection);
+      if (level + 1 < options.targetVertices.size()) {
+        L.meanCurvature.discrete.clear();
+        L.meanCurvature.smooth.clear();
+        L.meanCurvature.absoluteScale.clear();
+        L.meanCurvature.relativeError.clear();
+      }
+      say("  e_H = " + std::to_string(L.meanCurvature.meanAbsoluteError) + ", Hausdorff " +
+          std::to_string(L.deviation.hausdorffClosest) + ", normal deviation " +
+          std::to_string(L.deviation.normalDeviation) + " rad");
+    }
     L.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     say("  " + std::to_string(L.vertices) + " vertices: e_G = " + std::to_string(L.measure.meanAbsoluteError) +
         ", smallest angle " + std::to_string(L.quality.minAngleDeg) + " deg");
     study.levels.push_back(std::move(L));
   }
 
-  std::vector<double> vertices, radius, error, areaError;
+  std::vector<double> vertices, radius, error, areaError, errorH, hausdorff, normal;
   for (const auto& L : study.levels) {
     vertices.push_back(L.vertices);
     radius.push_back(L.quality.meanCircumradius);
     error.push_back(L.measure.meanAbsoluteError);
     areaError.push_back(std::abs(L.totalArea - study.smoothArea));
+    errorH.push_back(L.meanCurvature.meanAbsoluteError);
+    hausdorff.push_back(L.deviation.hausdorffClosest);
+    normal.push_back(L.deviation.normalDeviation);
+  }
+  if (study.extrinsic) {
+    study.orderMeanCurvatureVsCircumradius = fitLogLogSlope(radius, errorH);
+    study.orderHausdorffVsCircumradius = fitLogLogSlope(radius, hausdorff);
+    study.orderNormalDeviationVsCircumradius = fitLogLogSlope(radius, normal);
   }
   study.orderErrorVsCircumradius = fitLogLogSlope(radius, error);
   study.orderCircumradiusVsVertices = fitLogLogSlope(vertices, radius);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "conformesh/embedding/mean_curvature_measure.h"
+#include "conformesh/embedding/surface_projection.h"
 #include "conformesh/intrinsic/convergence_order.h"
 #include "conformesh/intrinsic/gaussian_curvature_measure.h"
 #include "conformesh/refine/remesh.h"
@@ -28,6 +30,13 @@ struct ConvergenceOptions {
     return r;
   }();
   intrinsic::CurvatureMeasureOptions measure;
+  // The extrinsic checks, when the metric has an embedding of its own (SmoothMetric::hasEmbedding): the mean
+  // curvature measure (paper eq. 2 against ∫(κ₁ + κ₂) dA over B(v, 0.08·√area)), the Hausdorff distance and the
+  // normal deviation between each mesh and the surface (Lemmas 4.8, 4.9); embedding/ documents them. Off by default
+  // in the library (they cost about as much as the remeshing); `conformesh convergence` turns them on.
+  bool extrinsic = false;
+  embedding::MeanCurvatureMeasureOptions meanCurvature;
+  embedding::ProjectionOptions projection;
   // A level whose vertex count misses its target by more than this fraction is remeshed once more at a corrected ε
   // (vertex counts scale like ε⁻²).
   double calibrationTolerance = 0.15;
@@ -41,6 +50,9 @@ struct ConvergenceLevel {
   int invertedTriangles = 0;
   double totalArea = 0;
   intrinsic::CurvatureMeasureResult measure;  // per-vertex vectors are kept only for the finest level
+  // Only when ConvergenceStudy::extrinsic (per-vertex vectors kept only for the finest level, as above).
+  embedding::MeanCurvatureMeasureResult meanCurvature;
+  embedding::SurfaceDeviation deviation;
   double seconds = 0;
 };
 
@@ -54,6 +66,12 @@ struct ConvergenceStudy {
   double orderErrorVsCircumradius = 0;  // log e_G against log mean circumradius
   double orderCircumradiusVsVertices = 0;  // log mean circumradius against log vertices
   double orderAreaVsCircumradius = 0;   // log |area − smooth area| against log mean circumradius
+  // With an embedding (extrinsic = true): e_H (Theorem 3.4: ≥ 1), the Hausdorff distance max |q − π(q)| (Lemma 4.9:
+  // 2) and the largest normal deviation (Lemma 4.9: 1), each against the mean circumradius.
+  bool extrinsic = false;
+  double orderMeanCurvatureVsCircumradius = 0;
+  double orderHausdorffVsCircumradius = 0;
+  double orderNormalDeviationVsCircumradius = 0;
 };
 
 ConvergenceStudy runConvergenceStudy(const intrinsic::SmoothMetric& metric, const ConvergenceOptions& options = {});

@@ -1,0 +1,44 @@
+// bench_embedding.cpp — the Ceres fit of embedding/isometric_embedding.h on the ellipsoid (a = 1, f = 0.3) at ≈ 20k and
+// ≈ 200k vertices: the icosahedral T0 of discretizeMetric (frequency N: 10N² + 2 vertices, edge lengths = geodesic
+// lengths, GeographicLib) fitted from the landmark-MDS start, i.e. without the true positions. Reports wall time,
+// the LM iterations of both solves and the final max relative residual as counters; one iteration each (a fit is
+// long and deterministic).
+//
+//   cmake -B build-bench -DCMAKE_BUILD_TYPE=Release -DCONFORMESH_BUILD_BENCH=ON
+//   cmake --build build-bench -j2 --target bench_embedding && build-bench/bench/bench_embedding
+#include <benchmark/benchmark.h>
+
+#include "conformesh/embedding/isometric_embedding.h"
+#include "conformesh/intrinsic/mesh_data.h"
+#include "conformesh/intrinsic/metric_discretization.h"
+#include "conformesh/intrinsic/metric_families.h"
+
+using namespace conformesh;
+
+namespace {
+
+void BM_FitEllipsoid(benchmark::State& state) {
+  const auto metric = intrinsic::makeMetric("ellipsoid", {{"f", 0.3}});
+  intrinsic::DiscretizationOptions o;
+  o.resolution = static_cast<int>(state.range(0));
+  const auto tri = intrinsic::toTriangulation(intrinsic::discretizeMetric(*metric, o));
+  embedding::EmbeddingResult fit;
+  for (auto _ : state) {
+    fit = embedding::fitIsometricEmbedding(tri);
+    benchmark::DoNotOptimize(fit.positions.data());
+  }
+  state.counters["vertices"] = tri.mesh.nVertices();
+  state.counters["regularized_iterations"] = fit.regularizedIterations;
+  state.counters["iterations"] = fit.iterations;
+  state.counters["start_s"] = fit.startSeconds;
+  state.counters["fit_s"] = fit.fitSeconds;
+  state.counters["max_rel_residual"] = fit.maxRelativeResidual;
+  state.counters["isometric"] = fit.isometric ? 1 : 0;
+}
+
+}  // namespace
+
+// N = 45: 20 252 vertices; N = 141: 198 812 vertices.
+BENCHMARK(BM_FitEllipsoid)->Arg(45)->Arg(141)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
+BENCHMARK_MAIN();

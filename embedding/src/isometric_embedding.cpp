@@ -1,0 +1,386 @@
+// isometric_embedding.cpp — landmark-MDS start, then Levenberg–Marquardt on relative edge-length residuals in two
+// solves (dihedral regularizer on, then off), then the verdict (see isometric_embedding.h and docs/embedding.md).
+#include "conformesh/embedding/isometric_embedding.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <queue>
+#include <string>
+
+#include <ceres/ceres.h>
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include "conformesh/intrinsic/errors.h"
+
+namespace conformesh::embedding {
+
+using intrinsic::HalfedgeMesh;
+using intrinsic::IntrinsicTriangulation;
+using intrinsic::kInvalid;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string sci(double x, int digits = 2) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*e", digits, x);
+  return buf;
+}
+
+// ===================================================================================================================
+// input checks
+
+void validateInput(const IntrinsicTriangulation& tri, const EmbeddingOptions& options) {
+  const auto& m = tri.mesh;
+  if (tri.background != intrinsic::Background::Euclidean)
+    throw InputError("embed: the mesh's lengths are meant in the " + intrinsic::toString(tri.background) +
+                     " background; only Euclidean (flat-triangle) lengths can be realized by straight edges in R³");
+  if (m.nFaces() == 0 || m.nVertices() < 3)
+    throw InputError("embed: need at least one triangle (3 vertices), found " + std::to_string(m.nVertices()) +
+                     " vertices and " + std::to_string(m.nFaces()) + " faces");
+  intrinsic::validateLengths(tri, "embed");
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e);
+    if (m.tail(h) == m.tip(h))
+      throw InputError("embed: edge " + std::to_string(e) + " is a self-loop at vertex " + std::to_string(m.tail(h)) +
+                       " with length " + sci(tri.edgeLengths[e], 6) +
+                       "; no straight segment joins a point to itself — flip it away (intrinsic Delaunay) first");
+  }
+  const auto comps = m.components();
+  if (comps.size() > 1)
+    throw InputError("embed: the mesh has " + std::to_string(comps.size()) +
+                     " connected components; edge lengths do not fix their relative placement — fit each component "
+                     "separately");
+  if (!options.initialPositions.empty()) {
+    if (static_cast<int>(options.initialPositions.size()) != m.nVertices())
+      throw InputError("embed: " + std::to_string(options.initialPositions.size()) + " initial positions for " +
+                       std::to_string(m.nVertices()) + " vertices");
+    for (int v = 0; v < m.nVertices(); ++v)
+      if (!options.initialPositions[v].allFinite())
+        throw InputError("embed: initial position of vertex " + std::to_string(v) + " is not finite");
+  }
+  if (options.tolerance <= 0 || !std::isfinite(options.tolerance))
+    throw InputError("embed: tolerance must be positive, found " + sci(options.tolerance));
+  if (options.regularizerWeight < 0 || !std::isfinite(options.regularizerWeight))
+    throw InputError("embed: regularizer weight must be ≥ 0, found " + sci(options.regularizerWeight));
+}
+
+// ===================================================================================================================
+// landmark MDS start
+
+// Adjacency by edges (multi-edges kept: Dijkstra takes the shortest).
+struct Graph {
+  std::vector<int> offset, target;
+  std::vector<double> weight;
+};
+
+Graph buildGraph(const IntrinsicTriangulation& tri) {
+  const auto& m = tri.mesh;
+  Graph g;
+  g.offset.assign(m.nVertices() + 1, 0);
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e);
+    ++g.offset[m.tail(h) + 1];
+    ++g.offset[m.tip(h) + 1];
+  }
+  for (int v = 0; v < m.nVertices(); ++v) g.offset[v + 1] += g.offset[v];
+  g.target.resize(g.offset.back());
+  g.weight.resize(g.offset.back());
+  std::vector<int> fill(g.offset.begin(), g.offset.end() - 1);
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e), a = m.tail(h), b = m.tip(h);
+    g.target[fill[a]] = b;
+    g.weight[fill[a]++] = tri.edgeLengths[e];
+    g.target[fill[b]] = a;
+    g.weight[fill[b]++] = tri.edgeLengths[e];
+  }
+  return g;
+}
+
+std::vector<double> dijkstra(const Graph& g, int source) {
+  const int n = static_cast<int>(g.offset.size()) - 1;
+  std::vector<double> d(n, std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+  d[source] = 0;
+  q.push({0.0, source});
+  while (!q.empty()) {
+    const auto [dv, v] = q.top();
+    q.pop();
+    if (dv > d[v]) continue;
+    for (int k = g.offset[v]; k < g.offset[v + 1]; ++k) {
+      const double nd = dv + g.weight[k];
+      if (nd < d[g.target[k]]) {
+        d[g.target[k]] = nd;
+        q.push({nd, g.target[k]});
+      }
+    }
+  }
+  return d;
+}
+
+// ===================================================================================================================
+// Ceres residuals
+
+// (|x_i − x_j| − ℓ)/ℓ.
+struct EdgeLengthResidual {
+  explicit EdgeLengthResidual(double length) : inverseLength(1 / length) {}
+  template <typename T>
+  bool operator()(const T* xi, const T* xj, T* r) const {
+    const T dx = xi[0] - xj[0], dy = xi[1] - xj[1], dz = xi[2] - xj[2];
+    r[0] = ceres::sqrt(dx * dx + dy * dy + dz * dz) * inverseLength - T(1);
+    return true;
+  }
+  double inverseLength;
+};
+
+// w·(n₁ − n₂) for faces (a, b, c) and (b, a, d) sharing edge ab; the normals are normalized (a zero normal — a
+// degenerate face — makes the residual undefined, so it is skipped by returning false, which LM treats as a rejected
+// step).
+struct DihedralResidual {
+  explicit DihedralResidual(double w) : weight(w) {}
+  template <typename T>
+  bool operator()(const T* a, const T* b, const T* c, const T* d, T* r) const {
+    using V = Eigen::Matrix<T, 3, 1>;
+    const V A(a[0], a[1], a[2]), B(b[0], b[1], b[2]), C(c[0], c[1], c[2]), D(d[0], d[1], d[2]);
+    const V n1 = (B - A).cross(C - A), n2 = (A - B).cross(D - B);
+    const T l1 = n1.norm(), l2 = n2.norm();
+    if (!(l1 > T(0)) || !(l2 > T(0))) return false;
+    for (int k = 0; k < 3; ++k) r[k] = T(weight) * (n1[k] / l1 - n2[k] / l2);
+    return true;
+  }
+  double weight;
+};
+
+class ProgressCallback : public ceres::IterationCallback {
+ public:
+  ProgressCallback(const std::function<void(const std::string&)>& progress, std::string stage, double edges)
+      : progress_(progress), stage_(std::move(stage)), edges_(edges) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (progress_)
+      progress_(stage_ + " iteration " + std::to_string(s.iteration) + ": cost " + sci(s.cost) + " (RMS residual " +
+                sci(std::sqrt(2 * s.cost / edges_)) + "), step " + sci(s.step_norm) +
+                (s.step_is_successful ? "" : " rejected"));
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const std::function<void(const std::string&)>& progress_;
+  std::string stage_;
+  double edges_;
+};
+
+ceres::Solver::Summary solve(ceres::Problem& problem, ceres::LinearSolverType linearSolver, int maxIterations,
+                             int threads, ceres::IterationCallback* cb) {
+  ceres::Solver::Options o;
+  o.minimizer_type = ceres::TRUST_REGION;
+  o.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  o.linear_solver_type = linearSolver;
+  o.max_num_iterations = maxIterations;
+  o.num_threads = std::max(1, threads);
+  // Stop only at round-off: the cost of a realizable length set falls to ~1e-28·E, and the verdict needs the fit to
+  // get there. Relative cost change 1e-15 and gradient 1e-20 are below what double precision can still improve.
+  o.function_tolerance = 1e-15;
+  o.gradient_tolerance = 1e-20;
+  o.parameter_tolerance = 1e-15;
+  o.logging_type = ceres::SILENT;
+  o.minimizer_progress_to_stdout = false;
+  if (cb) {
+    o.callbacks.push_back(cb);
+    o.update_state_every_iteration = false;
+  }
+  ceres::Solver::Summary summary;
+  ceres::Solve(o, &problem, &summary);
+  return summary;
+}
+
+}  // namespace
+
+// =====================================================================================================================
+
+std::vector<double> relativeEdgeResiduals(const IntrinsicTriangulation& tri,
+                                          const std::vector<Eigen::Vector3d>& positions) {
+  const auto& m = tri.mesh;
+  if (static_cast<int>(positions.size()) != m.nVertices())
+    throw InputError("embed: " + std::to_string(positions.size()) + " positions for " + std::to_string(m.nVertices()) +
+                     " vertices");
+  std::vector<double> r(m.nEdges());
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e);
+    r[e] = ((positions[m.tail(h)] - positions[m.tip(h)]).norm() - tri.edgeLengths[e]) / tri.edgeLengths[e];
+  }
+  return r;
+}
+
+std::vector<Eigen::Vector3d> landmarkMdsStart(const IntrinsicTriangulation& tri, int landmarks) {
+  const int n = tri.mesh.nVertices();
+  const Graph graph = buildGraph(tri);
+  const int k = std::max(4, std::min(landmarks, n));
+  // Farthest-point landmarks: each new one maximizes the graph distance to those chosen, so they spread evenly.
+  std::vector<int> marks;
+  std::vector<std::vector<double>> dist;  // dist[l][v]
+  std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+  int next = 0;
+  while (static_cast<int>(marks.size()) < std::min(k, n)) {
+    marks.push_back(next);
+    dist.push_back(dijkstra(graph, next));
+    for (int v = 0; v < n; ++v) {
+      if (!std::isfinite(dist.back()[v]))
+        throw InputError("embed: vertex " + std::to_string(v) + " is not connected to vertex " + std::to_string(next));
+      nearest[v] = std::min(nearest[v], dist.back()[v]);
+    }
+    next = static_cast<int>(std::max_element(nearest.begin(), nearest.end()) - nearest.begin());
+    if (nearest[next] == 0) break;  // every vertex is a landmark
+  }
+  const int L = static_cast<int>(marks.size());
+  // Classical MDS on the landmarks (Torgerson): B = −½ J Δ J with Δ the squared distances; coordinates from the top
+  // three eigenpairs. The other vertices by distance-based triangulation (de Silva & Tenenbaum 2004, eq. 3):
+  // x = −½ Λ^(−1/2) Vᵀ (δ_x − δ̄), δ̄ the mean column of Δ.
+  Eigen::MatrixXd D2(L, L);
+  for (int i = 0; i < L; ++i)
+    for (int j = 0; j < L; ++j) D2(i, j) = dist[i][marks[j]] * dist[i][marks[j]];
+  const Eigen::VectorXd mean = D2.rowwise().mean();
+  const Eigen::MatrixXd J = Eigen::MatrixXd::Identity(L, L) - Eigen::MatrixXd::Constant(L, L, 1.0 / L);
+  const Eigen::MatrixXd B = -0.5 * J * D2 * J;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(B);
+  Eigen::Matrix<double, 3, Eigen::Dynamic> P(3, L);  // rows: Λ^(−1/2) Vᵀ of the top three
+  const double top = std::max(eig.eigenvalues()(L - 1), 1e-300);
+  bool flat = false;
+  for (int c = 0; c < 3; ++c) {
+    const double lambda = eig.eigenvalues()(L - 1 - c);
+    // An eigenvalue below 1e-8 of the largest is numerically zero: the landmarks are (nearly) coplanar.
+    if (lambda <= 1e-8 * top) {
+      P.row(c).setZero();
+      flat = true;
+    } else {
+      P.row(c) = eig.eigenvectors().col(L - 1 - c).transpose() / std::sqrt(lambda);
+    }
+  }
+  std::vector<Eigen::Vector3d> x(n);
+  Eigen::VectorXd delta(L);
+  for (int v = 0; v < n; ++v) {
+    for (int l = 0; l < L; ++l) delta(l) = dist[l][v] * dist[l][v];
+    x[v] = -0.5 * P * (delta - mean);
+  }
+  if (flat) {
+    // A planar start is a saddle of the fit for a curved patch (z ↦ −z symmetry): bend it into a gentle paraboloid,
+    // height 1% of the squared distance from the centroid over the diameter, to pick a side.
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (const auto& p : x) c += p;
+    c /= n;
+    double diam2 = 0;
+    for (const auto& p : x) diam2 = std::max(diam2, (p - c).squaredNorm());
+    for (auto& p : x) p.z() += 0.01 * (p - c).squaredNorm() / std::sqrt(std::max(diam2, 1e-300));
+  }
+  // Graph distances overestimate geodesics (zig-zag paths), so the MDS scale is off by a few percent: rescale by the
+  // least-squares factor s minimizing Σ (s·d_e/ℓ_e − 1)².
+  const auto r = relativeEdgeResiduals(tri, x);
+  double s1 = 0, s2 = 0;
+  for (double q : r) {
+    s1 += 1 + q;
+    s2 += (1 + q) * (1 + q);
+  }
+  const double s = s2 > 0 ? s1 / s2 : 1.0;
+  for (auto& p : x) p *= s;
+  return x;
+}
+
+EmbeddingResult fitIsometricEmbedding(const IntrinsicTriangulation& tri, const EmbeddingOptions& options) {
+  validateInput(tri, options);
+  const auto& m = tri.mesh;
+  const int n = m.nVertices();
+  EmbeddingResult res;
+  res.tolerance = options.tolerance;
+
+  auto t0 = Clock::now();
+  std::vector<Eigen::Vector3d> start;
+  if (!options.initialPositions.empty()) {
+    start = options.initialPositions;
+    res.start = "initial positions";
+  } else {
+    if (options.progress)
+      options.progress("embed: landmark MDS start (" + std::to_string(options.landmarks) + " landmarks, Dijkstra on " +
+                       std::to_string(m.nEdges()) + " edges)");
+    start = landmarkMdsStart(tri, options.landmarks);
+    res.start = "landmark MDS (" + std::to_string(std::min(std::max(4, options.landmarks), n)) + " landmarks)";
+  }
+  res.startSeconds = secondsSince(t0);
+
+  std::vector<double> x(3 * static_cast<std::size_t>(n));
+  for (int v = 0; v < n; ++v)
+    for (int c = 0; c < 3; ++c) x[3 * v + c] = start[v][c];
+
+  ceres::Problem::Options po;
+  po.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+  auto addEdges = [&](ceres::Problem& problem) {
+    for (int e = 0; e < m.nEdges(); ++e) {
+      const int h = m.edgeHalfedge(e);
+      problem.AddResidualBlock(
+          new ceres::AutoDiffCostFunction<EdgeLengthResidual, 1, 3, 3>(new EdgeLengthResidual(tri.edgeLengths[e])),
+          nullptr, &x[3 * m.tail(h)], &x[3 * m.tip(h)]);
+    }
+  };
+
+  t0 = Clock::now();
+  if (options.regularizerWeight > 0) {
+    ceres::Problem problem(po);
+    addEdges(problem);
+    for (int e = 0; e < m.nEdges(); ++e) {
+      const int h = m.edgeHalfedge(e), t = m.twin(h);
+      if (t == kInvalid) continue;
+      const int a = m.tail(h), b = m.tip(h), c = m.tip(HalfedgeMesh::next(h)), d = m.tip(HalfedgeMesh::next(t));
+      // Ceres needs four distinct parameter blocks; in a Δ-complex c may equal d (or a, b): skip such edges.
+      if (c == d || c == a || c == b || d == a || d == b) continue;
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<DihedralResidual, 3, 3, 3, 3, 3>(
+                                   new DihedralResidual(options.regularizerWeight)),
+                               nullptr, &x[3 * a], &x[3 * b], &x[3 * c], &x[3 * d]);
+    }
+    ProgressCallback cb(options.progress, "embed: regularized fit", m.nEdges());
+    const auto summary = solve(problem, ceres::CGNR, options.maxIterationsRegularized, options.threads, &cb);
+    res.regularizedIterations = static_cast<int>(summary.iterations.size()) - 1;
+  }
+  {
+    ceres::Problem problem(po);
+    addEdges(problem);
+    ProgressCallback cb(options.progress, "embed: fit", m.nEdges());
+    const auto summary = solve(problem, ceres::SPARSE_NORMAL_CHOLESKY, options.maxIterations, options.threads, &cb);
+    res.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  }
+  res.fitSeconds = secondsSince(t0);
+
+  res.positions.resize(n);
+  for (int v = 0; v < n; ++v) res.positions[v] = Eigen::Vector3d(x[3 * v], x[3 * v + 1], x[3 * v + 2]);
+  const auto r = relativeEdgeResiduals(tri, res.positions);
+  double sum2 = 0;
+  for (int e = 0; e < m.nEdges(); ++e) {
+    sum2 += r[e] * r[e];
+    if (std::abs(r[e]) >= res.maxRelativeResidual) {
+      res.maxRelativeResidual = std::abs(r[e]);
+      res.worstEdge = e;
+    }
+  }
+  res.rmsRelativeResidual = std::sqrt(sum2 / m.nEdges());
+  res.isometric = res.maxRelativeResidual <= options.tolerance;
+  const std::string figures = "max relative edge residual " + sci(res.maxRelativeResidual) + " at edge " +
+                              std::to_string(res.worstEdge) + ", RMS " + sci(res.rmsRelativeResidual);
+  if (res.isometric) {
+    res.verdict = "isometric to tolerance " + sci(options.tolerance, 1) + " (" + figures + ")";
+  } else {
+    res.verdict = "not isometric: residual " + sci(res.maxRelativeResidual) + " cannot be removed (" + figures +
+                  ", above tolerance " + sci(options.tolerance, 1) + " after " +
+                  std::to_string(res.regularizedIterations + res.iterations) +
+                  " LM iterations): Levenberg–Marquardt finds no polyhedron with these edge lengths near this fit";
+  }
+  if (options.progress) options.progress("embed: " + res.verdict);
+  return res;
+}
+
+}  // namespace conformesh::embedding
