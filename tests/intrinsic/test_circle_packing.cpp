@@ -24,9 +24,12 @@
 #include "conformesh/intrinsic/mesh_generators.h"
 #include "conformesh/intrinsic/mesh_io.h"
 
+#include "../support/flat_torus_modulus.h"
+
 using namespace conformesh::intrinsic;
 using conformesh::ConvergenceError;
 using conformesh::InputError;
+using conformesh::testing::flatTorusModulus;
 
 namespace {
 
@@ -55,45 +58,6 @@ double meanAngleDistortion(const IntrinsicTriangulation& input, const IntrinsicT
   return total / count;
 }
 
-// The modulus of a flat torus (reduced: |Re τ| ≤ ½, |τ| ≥ 1, returned as (|Re τ|, Im τ)): the faces are unfolded along
-// a spanning tree from their lengths alone, the translations between the two placements of a vertex across the other
-// edges are collected, and the shortest two independent ones are Lagrange–Gauss reduced.
-std::complex<double> flatTorusModulus(const IntrinsicTriangulation& tri) {
-  const HalfedgeMesh& m = tri.mesh;
-  std::vector<std::array<std::complex<double>, 3>> corner(m.nFaces());
-  std::vector<char> placed(m.nFaces(), 0);
-  corner[0][0] = 0;
-  corner[0][1] = tri.length(0);
-  corner[0][2] = std::polar(tri.length(2), cornerAngle(tri, 0));
-  placed[0] = 1;
-  std::vector<int> queue{0};
-  std::vector<std::complex<double>> translations;
-  for (std::size_t qi = 0; qi < queue.size(); ++qi) {
-    const int f = queue[qi];
-    for (int k = 0; k < 3; ++k) {
-      const int h = 3 * f + k, t = m.twin(h), g = HalfedgeMesh::face(t), kt = t % 3;
-      const std::complex<double> a = corner[f][(k + 1) % 3], b = corner[f][k];  // t runs from tip(h) to tail(h)
-      if (placed[g]) {
-        translations.push_back(a - corner[g][kt]);
-        continue;
-      }
-      corner[g][kt] = a;
-      corner[g][(kt + 1) % 3] = b;
-      corner[g][(kt + 2) % 3] =
-          a + std::polar(tri.length(HalfedgeMesh::prev(t)), std::arg(b - a) + cornerAngle(tri, t));
-      placed[g] = 1;
-      queue.push_back(g);
-    }
-  }
-  std::complex<double> w1 = 0, w2 = 0;
-  for (auto t : translations)
-    if (std::abs(t) > 1e-6 && (w1 == 0.0 || std::abs(t) < std::abs(w1))) w1 = t;
-  for (auto t : translations)
-    if (std::abs(t) > 1e-6 && std::abs(std::imag(t / w1)) > 1e-6 && (w2 == 0.0 || std::abs(t) < std::abs(w2))) w2 = t;
-  std::tie(w1, w2) = reduceLatticeBasis(w1, w2);
-  const std::complex<double> tau = w2 / w1;
-  return {std::abs(tau.real()), std::abs(tau.imag())};
-}
 
 // Newton's quadratic convergence, from the residual history: every step that starts below 1e-3 and ends above the
 // round-off floor (1e-11) satisfies h_{k+1} ≤ 20 h_k² (measured constants up to 4 on these meshes; a linearly

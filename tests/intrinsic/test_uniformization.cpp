@@ -23,7 +23,10 @@
 #include "conformesh/intrinsic/mesh_io.h"
 #include "conformesh/intrinsic/uniformization.h"
 
+#include "../support/flat_torus_modulus.h"
+
 using namespace conformesh::intrinsic;
+using conformesh::testing::flatTorusModulus;
 
 namespace {
 
@@ -171,48 +174,6 @@ TEST_CASE("a planar annulus bounded by concentric circles is its own circle doma
   CHECK(std::exp(-lo) == Approx(1.0).epsilon(1e-10));  // outer radius 1 already: lengths scale by e^{w} = e^{−λ}
 }
 
-namespace {
-
-// The lattice of a flat torus: lay the faces out along a spanning tree, collect the translations between the two
-// placements of each vertex across the other edges, and reduce the shortest two independent ones (Lagrange–Gauss).
-std::complex<double> flatTorusModulus(const IntrinsicTriangulation& tri) {
-  const HalfedgeMesh& m = tri.mesh;
-  std::vector<std::array<std::complex<double>, 3>> corner(m.nFaces());
-  std::vector<char> placed(m.nFaces(), 0);
-  corner[0][0] = 0;
-  corner[0][1] = tri.length(0);
-  corner[0][2] = std::polar(tri.length(2), cornerAngle(tri, 0));
-  placed[0] = 1;
-  std::vector<int> queue{0};
-  std::vector<std::complex<double>> translations;
-  for (std::size_t qi = 0; qi < queue.size(); ++qi) {
-    const int f = queue[qi];
-    for (int k = 0; k < 3; ++k) {
-      const int h = 3 * f + k, t = m.twin(h), g = HalfedgeMesh::face(t), kt = t % 3;
-      const std::complex<double> a = corner[f][(k + 1) % 3], b = corner[f][k];  // t runs from tip(h) to tail(h)
-      if (placed[g]) {
-        translations.push_back(a - corner[g][kt]);
-        continue;
-      }
-      corner[g][kt] = a;
-      corner[g][(kt + 1) % 3] = b;
-      corner[g][(kt + 2) % 3] =
-          a + std::polar(tri.length(HalfedgeMesh::prev(t)), std::arg(b - a) + cornerAngle(tri, t));
-      placed[g] = 1;
-      queue.push_back(g);
-    }
-  }
-  std::complex<double> w1 = 0, w2 = 0;
-  for (auto t : translations)
-    if (std::abs(t) > 1e-6 && (w1 == 0.0 || std::abs(t) < std::abs(w1))) w1 = t;
-  for (auto t : translations)
-    if (std::abs(t) > 1e-6 && std::abs(std::imag(t / w1)) > 1e-6 && (w2 == 0.0 || std::abs(t) < std::abs(w2))) w2 = t;
-  std::tie(w1, w2) = reduceLatticeBasis(w1, w2);
-  std::complex<double> tau = w2 / w1;
-  return {std::abs(tau.real()), std::abs(tau.imag())};
-}
-
-}  // namespace
 
 TEST_CASE("a torus of revolution converges to the flat torus of modulus i r/sqrt(R^2 - r^2)") {
   const double R = 1.0, r = 0.4;
