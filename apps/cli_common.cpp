@@ -53,4 +53,23 @@ std::unique_ptr<intrinsic::SmoothMetric> loadMetric(const std::string& command, 
   return std::make_unique<intrinsic::SampledMetric>(intrinsic::readSampledField(field));
 }
 
+void addCurvatureMeasureProperties(intrinsic::MeshData& data, const intrinsic::CurvatureMeasureResult& c) {
+  std::vector<double> error(c.discrete.size());
+  for (std::size_t v = 0; v < error.size(); ++v) error[v] = c.discrete[v] - c.smooth[v];
+  data.vertexProperties["error"] = std::move(error);
+  data.vertexProperties["relative_error"] = c.relativeError;
+}
+
+void writeMeshOutputs(const intrinsic::MeshData& data, const std::string& path, bool ascii, const std::string& vtkPath,
+                      const std::function<intrinsic::VtkMesh()>& makeVtk, nlohmann::json& report) {
+  intrinsic::WriteOptions w;
+  if (ascii) w.plyEncoding = intrinsic::PlyEncoding::Ascii;
+  intrinsic::writeMesh(data, path, w);
+  report["output"] = path;
+  if (!vtkPath.empty()) {
+    intrinsic::writeVtk(makeVtk(), vtkPath);
+    report["vtk"] = vtkPath;
+  }
+}
+
 }  // namespace conformesh::apps

@@ -2,6 +2,7 @@
 // one-line messages with a non-zero exit status.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -9,8 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "conformesh/intrinsic/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/mesh_data.h"
 #include "conformesh/intrinsic/smooth_metric.h"
+#include "conformesh/intrinsic/vtk_writer.h"
 
 namespace conformesh::apps {
 
@@ -34,5 +37,14 @@ std::map<std::string, double> parseParameters(const std::vector<std::string>& ar
 // InputError, prefixed with `command`, when both or neither are given.
 std::unique_ptr<intrinsic::SmoothMetric> loadMetric(const std::string& command, const std::string& family,
                                                     const std::vector<std::string>& params, const std::string& field);
+
+// The curvature check's per-vertex figures as output properties: `error` = φ_T − φ_M of the vertex's region and
+// `relative_error`.
+void addCurvatureMeasureProperties(intrinsic::MeshData& data, const intrinsic::CurvatureMeasureResult& c);
+
+// Writes `data` to `path` (binary PLY unless `ascii`) and, when `vtkPath` is not empty, the VTK that `makeVtk` builds;
+// records both paths in `report` ("output", "vtk").
+void writeMeshOutputs(const intrinsic::MeshData& data, const std::string& path, bool ascii, const std::string& vtkPath,
+                      const std::function<intrinsic::VtkMesh()>& makeVtk, nlohmann::json& report);
 
 }  // namespace conformesh::apps

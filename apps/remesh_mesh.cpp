@@ -56,19 +56,9 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
     const intrinsic::CurvatureMeasureOptions co;
     const intrinsic::CurvatureMeasureResult c = refine::meshCurvatureMeasure(r, in.triangulation, co);
     j["gaussian_curvature_measure"] = curvatureMeasureJson(c, co);
-    std::vector<double> error(c.discrete.size());
-    for (size_t v = 0; v < error.size(); ++v) error[v] = c.discrete[v] - c.smooth[v];
-    data.vertexProperties["error"] = error;
-    data.vertexProperties["relative_error"] = c.relativeError;
+    addCurvatureMeasureProperties(data, c);
   }
-  intrinsic::WriteOptions w;
-  if (a.ascii) w.plyEncoding = intrinsic::PlyEncoding::Ascii;
-  intrinsic::writeMesh(data, a.output, w);
-  j["output"] = a.output;
-  if (!a.vtk.empty()) {
-    intrinsic::writeVtk(refine::toVtkMesh(data, r), a.vtk);
-    j["vtk"] = a.vtk;
-  }
+  writeMeshOutputs(data, a.output, a.ascii, a.vtk, [&] { return refine::toVtkMesh(data, r); }, j);
   if (a.json) {
     printJson(j);
     return;
