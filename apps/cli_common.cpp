@@ -16,15 +16,21 @@ namespace {
 bool gQuiet = false;
 }
 
-void printJson(const nlohmann::json& j) { std::cout << j.dump(2) << '\n'; }
+void printJson(const nlohmann::json& j) {
+  std::cout << j.dump(2) << '\n';
+}
 
 void progress(const std::string& what) {
   if (!gQuiet) std::cerr << "conformesh: " << what << std::endl;
 }
 
-void setQuiet(bool quiet) { gQuiet = quiet; }
+void setQuiet(bool quiet) {
+  gQuiet = quiet;
+}
 
-intrinsic::MeshData loadMesh(const std::string& path) { return intrinsic::readMesh(path); }
+intrinsic::MeshData loadMesh(const std::string& path) {
+  return intrinsic::readMesh(path);
+}
 
 std::map<std::string, double> parseParameters(const std::vector<std::string>& args) {
   std::map<std::string, double> params;
@@ -42,11 +48,11 @@ std::map<std::string, double> parseParameters(const std::vector<std::string>& ar
   return params;
 }
 
-
 std::unique_ptr<intrinsic::SmoothMetric> loadMetric(const std::string& command, const std::string& family,
                                                     const std::vector<std::string>& params, const std::string& field) {
   if (family.empty() == field.empty())
-    throw InputError(command + ": give exactly one of a FAMILY name (see `conformesh discretize --list`) or --field FILE");
+    throw InputError(command +
+                     ": give exactly one of a FAMILY name (see `conformesh discretize --list`) or --field FILE");
   if (field.empty()) return intrinsic::makeMetric(family, parseParameters(params));
   if (!params.empty()) throw InputError(command + ": --param applies to families, not to --field");
   progress("reading metric field " + field);

@@ -2,8 +2,8 @@
 // metric: a table (CSV and JSON) of vertices, triangles, circumradii, angles, e_G and time per mesh, the fitted orders,
 // and PNG plots of Figs. 10 (a–d), 11 (a, c) and 12 (histogram) drawn by scripts/plot_convergence.py (matplotlib).
 #include <cstdio>
-#include <cstring>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -15,7 +15,6 @@
 #include "conformesh/intrinsic/metric_families.h"
 #include "conformesh/refine/convergence_study.h"
 #include "report_json.h"
-
 
 namespace conformesh::apps {
 
@@ -60,7 +59,8 @@ void run(const ConvergenceArgs& a) {
     o.targetVertices = parseCounts(a.vertices);
   } else if (a.levels > 0) {
     // The first `levels` of the paper's Table 2 counts.
-    if (a.levels < 2 || a.levels > 11) throw InputError("--levels: expected 2 to 11, found " + std::to_string(a.levels));
+    if (a.levels < 2 || a.levels > 11)
+      throw InputError("--levels: expected 2 to 11, found " + std::to_string(a.levels));
     o.targetVertices.resize(a.levels);
   }
   o.remesh.ratioBound = a.ratio;
@@ -167,18 +167,18 @@ void run(const ConvergenceArgs& a) {
               "mean min", "e_G", "within", "sec");
   for (const auto& L : study.levels)
     std::printf("%9d %9d %11.4e %11.4e %9.3f %9.3f %11.4e %7.1f%% %7.2f\n", L.vertices, L.triangles,
-                L.quality.maxCircumradius, L.quality.meanCircumradius, L.quality.minAngleDeg,
-                L.quality.meanMinAngleDeg, L.measure.meanAbsoluteError, 100 * L.measure.fractionWithinBand, L.seconds);
+                L.quality.maxCircumradius, L.quality.meanCircumradius, L.quality.minAngleDeg, L.quality.meanMinAngleDeg,
+                L.measure.meanAbsoluteError, 100 * L.measure.fractionWithinBand, L.seconds);
   std::printf("fitted orders: e_G ~ R^%.3f, mean R ~ V^%.3f, |area error| ~ R^%.3f\n", study.orderErrorVsCircumradius,
               study.orderCircumradiusVsVertices, study.orderAreaVsCircumradius);
   if (study.extrinsic) {
-    std::printf("extrinsic (the metric's embedding): e_H over balls of radius 0.08*sqrt(area), "
-                "Hausdorff max|q - pi(q)|, max normal deviation\n");
+    std::printf(
+        "extrinsic (the metric's embedding): e_H over balls of radius 0.08*sqrt(area), "
+        "Hausdorff max|q - pi(q)|, max normal deviation\n");
     std::printf("%9s %11s %11s %11s %8s\n", "vertices", "e_H", "Hausdorff", "normal dev", "within");
     for (const auto& L : study.levels)
       std::printf("%9d %11.4e %11.4e %11.4e %7.1f%%\n", L.vertices, L.meanCurvature.meanAbsoluteError,
-                  L.deviation.hausdorffClosest, L.deviation.normalDeviation,
-                  100 * L.meanCurvature.fractionWithinBand);
+                  L.deviation.hausdorffClosest, L.deviation.normalDeviation, 100 * L.meanCurvature.fractionWithinBand);
     std::printf("fitted orders: e_H ~ R^%.3f (>= 1), Hausdorff ~ R^%.3f (2), normal deviation ~ R^%.3f (1)\n",
                 study.orderMeanCurvatureVsCircumradius, study.orderHausdorffVsCircumradius,
                 study.orderNormalDeviationVsCircumradius);

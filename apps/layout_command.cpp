@@ -28,7 +28,9 @@ struct LayoutCommandOptions {
   bool json = false;
 };
 
-nlohmann::json complexJson(Complex z) { return {z.real(), z.imag()}; }
+nlohmann::json complexJson(Complex z) {
+  return {z.real(), z.imag()};
+}
 
 std::string extensionOf(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -217,8 +219,9 @@ void registerLayoutCommand(CLI::App& app) {
       "docs/layout.md has the theory; --json prints every figure machine-readably.");
   sub->add_option("input", o->input, "Input mesh (OFF, OBJ, PLY; positions or edge lengths)")->required();
   sub->add_option("-o,--output", o->output, "Output file: .svg, .png or .ply")->required();
-  sub->add_option("--tiles", o->tiles, "Rings of tiles of the universal cover in pictures (tori: (2n+1)^2 tiles; "
-                                       "hyperbolic: words of length <= n)")
+  sub->add_option("--tiles", o->tiles,
+                  "Rings of tiles of the universal cover in pictures (tori: (2n+1)^2 tiles; "
+                  "hyperbolic: words of length <= n)")
       ->capture_default_str()
       ->check(CLI::Range(0, 4));
   sub->add_option("--pixels", o->pixels, "Picture size in pixels")->capture_default_str()->check(CLI::Range(64, 8000));

@@ -71,7 +71,8 @@ void run(const RemeshArgs& a) {
     j["gaussian_curvature_measure"] = curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);
   }
-  writeMeshOutputs(data, a.output, a.ascii, a.vtk, [&] { return refine::toVtkMesh(data, r); }, j);
+  writeMeshOutputs(
+      data, a.output, a.ascii, a.vtk, [&] { return refine::toVtkMesh(data, r); }, j);
   if (a.json) {
     printJson(j);
     return;
@@ -122,7 +123,8 @@ void registerRemeshCommand(CLI::App& app) {
   sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric (required)")->required();
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (default sqrt(2): 20.7 deg)");
   sub->add_flag("--uniform", a->uniform, "Ignore the conformal factor (uniform in the uniformized domain)");
-  sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of the initial triangulation T0 (default: automatic from eps, 8..32)");
+  sub->add_option("--t0-resolution", a->t0Resolution,
+                  "Resolution of the initial triangulation T0 (default: automatic from eps, 8..32)");
   sub->add_option("--disk-target", a->diskTarget,
                   "Disk charts: 'circle' maps to the unit disk; 'keep-boundary' flattens keeping the boundary lengths "
                   "(corners keep their angles, lambda = 0 on the boundary); 'auto' (default) keeps the boundary of "

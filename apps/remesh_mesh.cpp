@@ -58,7 +58,8 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
     j["gaussian_curvature_measure"] = curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);
   }
-  writeMeshOutputs(data, a.output, a.ascii, a.vtk, [&] { return refine::toVtkMesh(data, r); }, j);
+  writeMeshOutputs(
+      data, a.output, a.ascii, a.vtk, [&] { return refine::toVtkMesh(data, r); }, j);
   if (a.json) {
     printJson(j);
     return;

@@ -17,7 +17,9 @@ using intrinsic::Background;
 using intrinsic::HalfedgeMesh;
 using intrinsic::IntrinsicTriangulation;
 
-Complex applyMobius(const Mobius& m, Complex z) { return (m(0, 0) * z + m(0, 1)) / (m(1, 0) * z + m(1, 1)); }
+Complex applyMobius(const Mobius& m, Complex z) {
+  return (m(0, 0) * z + m(0, 1)) / (m(1, 0) * z + m(1, 1));
+}
 
 Mobius evaluateWord(const std::vector<Mobius>& generators, const GroupWord& word) {
   Mobius out = Mobius::Identity();
@@ -45,7 +47,9 @@ using ComplexL = std::complex<Real>;
 using MobiusL = Eigen::Matrix<ComplexL, 2, 2>;
 const Real kPi = 3.141592653589793238462643383279502884L;
 
-ComplexL applyL(const MobiusL& m, ComplexL z) { return (m(0, 0) * z + m(0, 1)) / (m(1, 0) * z + m(1, 1)); }
+ComplexL applyL(const MobiusL& m, ComplexL z) {
+  return (m(0, 0) * z + m(0, 1)) / (m(1, 0) * z + m(1, 1));
+}
 
 MobiusL inverseL(const MobiusL& m) {  // 2×2 adjugate over the determinant (1 up to round-off for our isometries)
   MobiusL out;
@@ -93,7 +97,9 @@ MobiusL centring(Background bg, ComplexL c) {
   return m;
 }
 
-Mobius toDouble(const MobiusL& m) { return m.cast<Complex>(); }
+Mobius toDouble(const MobiusL& m) {
+  return m.cast<Complex>();
+}
 
 }  // namespace
 

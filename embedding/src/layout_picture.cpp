@@ -19,7 +19,9 @@ using intrinsic::IntrinsicTriangulation;
 
 namespace {
 
-Eigen::Vector2d toVec(Complex z) { return {z.real(), z.imag()}; }
+Eigen::Vector2d toVec(Complex z) {
+  return {z.real(), z.imag()};
+}
 
 // The generator loops drawn on the copies of their edges in D: halfedge h at its placement in face(h).
 void addGeneratorLoops(const IntrinsicTriangulation& tri, const FundamentalDomain& fd, const Mobius& tile,
@@ -39,7 +41,8 @@ void addTiles(const IntrinsicTriangulation& tri, const FundamentalDomain& fd, co
               const PictureOptions& options, LayoutDrawing& d) {
   // tiles[0] is the identity: D itself, always drawn; the others as long as the triangle budget allows.
   const long perTile = tri.mesh.nFaces();
-  const std::size_t nTiles = std::max<long>(1, std::min<long>(tiles.size(), options.maxTriangles / std::max(1L, perTile)));
+  const std::size_t nTiles =
+      std::max<long>(1, std::min<long>(tiles.size(), options.maxTriangles / std::max(1L, perTile)));
   for (std::size_t t = 0; t < nTiles; ++t) {
     for (const auto& c : fd.corners) {
       DrawnTriangle tr;
@@ -143,7 +146,8 @@ std::string toSvg(const LayoutDrawing& drawing, int pixels) {
   const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
   auto px = [&](const Eigen::Vector2d& p) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%.2f,%.2f", 0.5 * pixels + scale * (p.x() - cx), 0.5 * pixels - scale * (p.y() - cy));
+    std::snprintf(buf, sizeof buf, "%.2f,%.2f", 0.5 * pixels + scale * (p.x() - cx),
+                  0.5 * pixels - scale * (p.y() - cy));
     return std::string(buf);
   };
   // Palette: outline dark grey, then one colour per generator loop (Okabe–Ito, distinguishable for colour-blind eyes).

@@ -76,8 +76,8 @@ ConvergenceStudy runConvergenceStudy(const SmoothMetric& metric, const Convergen
       L.measure.relativeError.clear();
     }
     if (study.extrinsic) {
-      L.meanCurvature = embedding::meanCurvatureMeasure(r.mesh, r.positions, r.reference, *surface,
-                                                        options.meanCurvature);
+      L.meanCurvature =
+          embedding::meanCurvatureMeasure(r.mesh, r.positions, r.reference, *surface, options.meanCurvature);
       L.deviation = embedding::surfaceDeviation(r.mesh.mesh, r.positions, r.reference, *surface, options.projection);
       if (level + 1 < options.targetVertices.size()) {
         L.meanCurvature.discrete.clear();

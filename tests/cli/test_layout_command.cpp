@@ -20,8 +20,12 @@ namespace {
 
 using Run = conformesh::testing::CliRun;
 
-Run runCli(const std::string& args) { return conformesh::testing::runConformesh(args); }
-std::string meshFile(const std::string& name) { return std::string(CONFORMESH_TEST_DATA_DIR) + "/" + name; }
+Run runCli(const std::string& args) {
+  return conformesh::testing::runConformesh(args);
+}
+std::string meshFile(const std::string& name) {
+  return std::string(CONFORMESH_TEST_DATA_DIR) + "/" + name;
+}
 
 }  // namespace
 
@@ -76,8 +80,8 @@ TEST_CASE("layout of a torus of revolution: periods and modulus, PLY texcoords, 
 
 TEST_CASE("layout of a genus-2 surface prints its deck group and relation") {
   const fs::path d = conformesh::testing::scratchDir();
-  const Run r = runCli("layout " + meshFile("double-torus-example.off") + " -o " + (d / "g2.svg").string() +
-                       " --json --tiles 2");
+  const Run r =
+      runCli("layout " + meshFile("double-torus-example.off") + " -o " + (d / "g2.svg").string() + " --json --tiles 2");
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["target"] == "hyperbolic");

@@ -55,7 +55,8 @@ TEST_CASE("a spherical cap converges to its stereographic image, normalized to t
     int h = h0;
     do {
       const int w = input.mesh.tip(h);
-      if (direction < 0 || std::abs(std::remainder(us[w], 2 * M_PI)) < std::abs(std::remainder(us[direction], 2 * M_PI)))
+      if (direction < 0 ||
+          std::abs(std::remainder(us[w], 2 * M_PI)) < std::abs(std::remainder(us[direction], 2 * M_PI)))
         direction = w;
       h = input.mesh.nextOutgoing(h);
     } while (h != h0);
@@ -84,8 +85,8 @@ TEST_CASE("a spherical cap converges to its stereographic image, normalized to t
 TEST_CASE("layoutDisk reports bad choices and wrong targets") {
   const Uniformization u = uniformize(toTriangulation(makeDisk({3, 1.0})));
   const int boundary = u.uniform.mesh.nVertices() - 1;  // the last ring is the boundary
-  CHECK_THROWS_WITH(layoutDisk(u, {boundary, -1}), Catch::Contains("centre vertex " + std::to_string(boundary)) &&
-                                                       Catch::Contains("on the boundary"));
+  CHECK_THROWS_WITH(layoutDisk(u, {boundary, -1}),
+                    Catch::Contains("centre vertex " + std::to_string(boundary)) && Catch::Contains("on the boundary"));
   CHECK_THROWS_WITH(layoutDisk(u, {0, 999}), Catch::Contains("vertex 999 out of range"));
   const Uniformization sphere = uniformize(toTriangulation(makeIcosphere({1, 1.0})));
   CHECK_THROWS_WITH(layoutDisk(sphere), Catch::Contains("found target sphere"));

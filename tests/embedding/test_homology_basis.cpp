@@ -1,7 +1,8 @@
 // test_homology_basis.cpp — tree–cotree decomposition on closed surfaces of genus 0–3 (the genus-g slabs of
 // mesh_generators.h and a one-vertex flat torus with self-loops): the edge classes partition the edges with
-// |T| = V − 1, |C| = F − 1, |G| = 2g; the tree is a shortest-path tree; every generator loop is closed through the root;
-// the relation has length 4g with each generator once with each sign; inputs with boundary or several components named.
+// |T| = V − 1, |C| = F − 1, |G| = 2g; the tree is a shortest-path tree; every generator loop is closed through the
+// root; the relation has length 4g with each generator once with each sign; inputs with boundary or several components
+// named.
 #include <catch2/catch.hpp>
 
 #include <map>

@@ -21,7 +21,8 @@ TEST_CASE("genus 2 and 3 surfaces: deck generators in SU(1,1) satisfying the sur
   for (const auto& [file, genus] : std::vector<std::pair<std::string, int>>{
            {"eight.off", 2}, {"double-torus-example.off", 2}, {"elephant.off", 3}, {"3torus.off", 3}}) {
     SECTION(file) {
-      const IntrinsicTriangulation input = toTriangulation(readMesh(std::string(CONFORMESH_TEST_DATA_DIR) + "/" + file));
+      const IntrinsicTriangulation input =
+          toTriangulation(readMesh(std::string(CONFORMESH_TEST_DATA_DIR) + "/" + file));
       // The relation multiplies each vertex's angle-sum error by the norms of up to 4g generators (entries up to ~70 on
       // elephant.off): the default flow tolerance 1e-10 (reached: 2e-11) leaves the relation at 2e-8 there, so the flow
       // is run to 1e-13 (one more Newton step; the relation then holds to ~1e-12 on all four meshes).
@@ -30,8 +31,9 @@ TEST_CASE("genus 2 and 3 surfaces: deck generators in SU(1,1) satisfying the sur
       o.flow.relativeFloor = 1e-15;
       const Uniformization u = uniformize(input, o);
       const HyperbolicLayout h = layoutHyperbolic(u.uniform);
-      INFO(file << ": flow residual " << u.report.maxResidual << ", relation " << h.relation << ", residual " << h.relationResidual << ", vertex residual "
-                << h.domain.maxVertexResidual << ", min area " << h.domain.minSignedArea);
+      INFO(file << ": flow residual " << u.report.maxResidual << ", relation " << h.relation << ", residual "
+                << h.relationResidual << ", vertex residual " << h.domain.maxVertexResidual << ", min area "
+                << h.domain.minSignedArea);
       REQUIRE(static_cast<int>(h.generators.size()) == 2 * genus);
       // The relation word: length 4g, every generator once with each sign (a closed orientable surface).
       const GroupWord& w = h.domain.basis.relation;

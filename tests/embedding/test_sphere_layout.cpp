@@ -124,6 +124,6 @@ TEST_CASE("an ellipsoid's sphere layout converges to GeographicLib's conformal l
   }
   const double order = fitLogLogSlope(hs, errors);
   WARN("ellipsoid: max point errors " << errors[0] << " " << errors[1] << " " << errors[2] << " " << errors[3]
-                                     << ", order " << order);
+                                      << ", order " << order);
   CHECK(order > 1.8);  // measured 1.99
 }

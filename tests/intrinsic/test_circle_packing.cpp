@@ -58,7 +58,6 @@ double meanAngleDistortion(const IntrinsicTriangulation& input, const IntrinsicT
   return total / count;
 }
 
-
 // Newton's quadratic convergence, from the residual history: every step that starts below 1e-3 and ends above the
 // round-off floor (1e-11) satisfies h_{k+1} ≤ 20 h_k² (measured constants up to 4 on these meshes; a linearly
 // convergent iteration, e.g. with a wrong Hessian, gives h_{k+1} ≈ c h_k and fails). Returns how many steps were

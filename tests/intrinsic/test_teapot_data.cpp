@@ -80,8 +80,8 @@ TEST_CASE("teapot patch T0: grid of the rectangle, area at second order, Gauss-B
     CHECK(std::abs(curvatureTotals(tri).gaussBonnetResidual) < 1e-10);
     hs.push_back(1.0 / N);
     errors.push_back(std::abs(totalArea(tri) - area) / area);
-    std::cout << "teapot patch 4 N=" << N << " V=" << rep.vertices << " area rel.err=" << errors.back()
-              << " min angle " << rep.minAngle * 180 / M_PI << " deg\n";
+    std::cout << "teapot patch 4 N=" << N << " V=" << rep.vertices << " area rel.err=" << errors.back() << " min angle "
+              << rep.minAngle * 180 / M_PI << " deg\n";
   }
   const double order = fitLogLogSlope(hs, errors);
   std::cout << "teapot patch 4: area order " << order << "\n";

@@ -174,7 +174,6 @@ TEST_CASE("a planar annulus bounded by concentric circles is its own circle doma
   CHECK(std::exp(-lo) == Approx(1.0).epsilon(1e-10));  // outer radius 1 already: lengths scale by e^{w} = e^{−λ}
 }
 
-
 TEST_CASE("a torus of revolution converges to the flat torus of modulus i r/sqrt(R^2 - r^2)") {
   const double R = 1.0, r = 0.4;
   const double a = r / std::sqrt(R * R - r * r);
@@ -251,9 +250,10 @@ TEST_CASE("an ellipsoid of revolution maps to the sphere close to its conformal 
   INFO("angle errors " << std::exp(logErr[0]) << " " << std::exp(logErr[1]) << " " << std::exp(logErr[2]) << ", order "
                        << sxy / sxx);
   // Measured: 5.0e-4, 2.5e-4, 2.9e-4 (order 0.4): on these z-scaled icospheres the error stalls near 3e-4 (the
-  // maximum sits near the equator; docs/ricci_flow.md §6), while on the ellipsoid family's own chart discretizations the
-  // same comparison converges at order 2 (tests/embedding/test_sphere_layout.cpp): the stall belongs to the meshes. The
-  // test holds the accuracy reached here; for points on the sphere itself (c = 1) the pipeline reproduces them to 2e-8.
+  // maximum sits near the equator; docs/ricci_flow.md §6), while on the ellipsoid family's own chart discretizations
+  // the same comparison converges at order 2 (tests/embedding/test_sphere_layout.cpp): the stall belongs to the meshes.
+  // The test holds the accuracy reached here; for points on the sphere itself (c = 1) the pipeline reproduces them to
+  // 2e-8.
   for (double le : logErr) CHECK(std::exp(le) < 6e-4);
 }
 

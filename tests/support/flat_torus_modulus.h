@@ -36,8 +36,8 @@ inline std::complex<double> flatTorusModulus(const intrinsic::IntrinsicTriangula
       }
       corner[g][kt] = a;
       corner[g][(kt + 1) % 3] = b;
-      corner[g][(kt + 2) % 3] =
-          a + std::polar(tri.length(intrinsic::HalfedgeMesh::prev(t)), std::arg(b - a) + intrinsic::cornerAngle(tri, t));
+      corner[g][(kt + 2) % 3] = a + std::polar(tri.length(intrinsic::HalfedgeMesh::prev(t)),
+                                               std::arg(b - a) + intrinsic::cornerAngle(tri, t));
       placed[g] = 1;
       queue.push_back(g);
     }

@@ -5,7 +5,8 @@
 // [[α, β], [0, 1]] with |α| = 1 (z ↦ αz + β) in the plane, SU(1,1) = [[a, b], [b̄, ā]], |a|² − |b|² = 1 on the disk.
 //
 // Faces are placed by composing per-edge transition matrices built from lengths and angles (never by re-intersecting
-// circles), in long double, so a face at depth k of the cotree carries k products of 10⁻¹⁹ round-off. docs/layout.md §2 derives the formulas.
+// circles), in long double, so a face at depth k of the cotree carries k products of 10⁻¹⁹ round-off. docs/layout.md §2
+// derives the formulas.
 #pragma once
 
 #include <array>
@@ -47,7 +48,7 @@ struct FundamentalDomain {
   // Max over vertices of distanceFromIdentity of the transitions τ around the vertex composed in its own face frame
   // (= M⁻¹ (A_{x_0} ⋯ A_{x_{k−1}}) M): of the order of the vertex's angle-sum error.
   double maxVertexResidual = 0;
-  double minSignedArea = 0;      // min over faces of the signed area of the developed corners (> 0: all positive)
+  double minSignedArea = 0;  // min over faces of the signed area of the developed corners (> 0: all positive)
 };
 
 // Develops a closed Euclidean or hyperbolic triangulation (e.g. intrinsic::uniformize's T0* of genus ≥ 1). Throws

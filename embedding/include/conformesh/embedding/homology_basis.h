@@ -22,12 +22,12 @@ enum class EdgeClass : char { Tree, Cotree, Generator };
 
 struct HomologyBasis {
   int genus = 0;
-  int rootVertex = 0;                  // root of the primal tree T
-  int rootFace = 0;                    // root of the cotree C
-  std::vector<EdgeClass> edgeClass;    // per edge
-  std::vector<int> generatorEdges;     // the 2g edges of G, in generator order
-  std::vector<int> parentHalfedge;     // per vertex: halfedge of T arriving at it from its parent (kInvalid at root)
-  std::vector<double> rootDistance;    // per vertex: length of its T-path to the root
+  int rootVertex = 0;                // root of the primal tree T
+  int rootFace = 0;                  // root of the cotree C
+  std::vector<EdgeClass> edgeClass;  // per edge
+  std::vector<int> generatorEdges;   // the 2g edges of G, in generator order
+  std::vector<int> parentHalfedge;   // per vertex: halfedge of T arriving at it from its parent (kInvalid at root)
+  std::vector<double> rootDistance;  // per vertex: length of its T-path to the root
   // Per halfedge h not in C, the deck transformation of crossing h (fundamental_domain.h: A_h) as a word in the
   // generators; empty for cotree halfedges. The generator edge i's halfedge edgeHalfedge(e) has the word [+(i+1)].
   std::vector<GroupWord> crossingWord;

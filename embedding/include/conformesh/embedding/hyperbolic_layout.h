@@ -12,9 +12,9 @@
 namespace conformesh::embedding {
 
 struct DeckGenerator {
-  Mobius matrix;               // in SU(1,1), determinant 1
-  double translationLength;    // 2 acosh(|Re a|): the length of the closed geodesic in the generator's free homotopy
-                               // class (|trace| = 2|Re a| > 2 for every non-trivial element of a surface group)
+  Mobius matrix;             // in SU(1,1), determinant 1
+  double translationLength;  // 2 acosh(|Re a|): the length of the closed geodesic in the generator's free homotopy
+                             // class (|trace| = 2|Re a| > 2 for every non-trivial element of a surface group)
 };
 
 struct HyperbolicLayout {
@@ -22,7 +22,7 @@ struct HyperbolicLayout {
   std::vector<DeckGenerator> generators;  // 2g, in HomologyBasis::generatorEdges order
   std::string relation;                   // the relation word, e.g. "g1 g2 g1^-1 g3 ..." (length 4g)
   double relationResidual = 0;            // distance of the evaluated relation from ±I
-  double maxDeterminantError = 0;         // max |det − 1| and max |d − ā|, |c − b̄| over the generators (SU(1,1) form)
+  double maxDeterminantError = 0;  // max |det − 1| and max |d − ā|, |c − b̄| over the generators (SU(1,1) form)
 };
 
 // Throws InputError for a surface that is not a closed hyperbolic triangulation of genus ≥ 2.

@@ -21,8 +21,8 @@ namespace conformesh::embedding {
 
 struct DrawnTriangle {
   std::array<Eigen::Vector2d, 3> corners;
-  int layer = 0;        // 0: the fundamental domain (or the whole layout), 1: a tile of the universal cover
-  double shade = 1.0;   // fill lightness factor in (0, 1] (sphere: Lambert shading of the face)
+  int layer = 0;       // 0: the fundamental domain (or the whole layout), 1: a tile of the universal cover
+  double shade = 1.0;  // fill lightness factor in (0, 1] (sphere: Lambert shading of the face)
 };
 
 struct DrawnPolyline {

@@ -17,10 +17,10 @@
 namespace conformesh::embedding {
 
 struct CornerLayout {
-  std::vector<std::array<int, 3>> faces;               // vertex indices (the uniformized triangulation's faces)
-  std::vector<Eigen::Vector3d> positions;              // per vertex; written as x y z (zeros when unknown)
+  std::vector<std::array<int, 3>> faces;                // vertex indices (the uniformized triangulation's faces)
+  std::vector<Eigen::Vector3d> positions;               // per vertex; written as x y z (zeros when unknown)
   std::vector<std::array<Eigen::Vector2d, 3>> corners;  // per face: the domain coordinates of its three corners
-  std::vector<std::string> comments;                   // header comments (what the coordinates are)
+  std::vector<std::string> comments;                    // header comments (what the coordinates are)
 };
 
 // Corner coordinates of each layout: the developed fundamental domain D (tori: the plane; hyperbolic: the Poincaré

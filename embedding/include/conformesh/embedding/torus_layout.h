@@ -22,10 +22,11 @@ ModularReduction reduceModulus(Complex tau);
 struct TorusLayout {
   // The developed disk D, rotated so that reducedOmega1 is real and positive; deck transformations = translations.
   FundamentalDomain domain;
-  Complex omega1, omega2;    // the periods of the generators, ordered so that Im(ω₂/ω₁) > 0
+  Complex omega1, omega2;                // the periods of the generators, ordered so that Im(ω₂/ω₁) > 0
   Complex reducedOmega1, reducedOmega2;  // a basis of the same lattice with τ = reducedOmega2/reducedOmega1 ∈ F
   Complex tau;                           // reduced modulus
-  double maxRotation = 0;  // max |arg α| over the generators' linear parts (0 for a flat metric: holonomy is a translation)
+  double maxRotation =
+      0;  // max |arg α| over the generators' linear parts (0 for a flat metric: holonomy is a translation)
 };
 
 // Throws InputError for a surface that is not a closed Euclidean genus-1 triangulation.

@@ -63,9 +63,9 @@ struct ConvergenceStudy {
   int t0Vertices = 0;
   std::vector<ConvergenceLevel> levels;
   // Least-squares slopes of the log–log data over all levels.
-  double orderErrorVsCircumradius = 0;  // log e_G against log mean circumradius
+  double orderErrorVsCircumradius = 0;     // log e_G against log mean circumradius
   double orderCircumradiusVsVertices = 0;  // log mean circumradius against log vertices
-  double orderAreaVsCircumradius = 0;   // log |area − smooth area| against log mean circumradius
+  double orderAreaVsCircumradius = 0;      // log |area − smooth area| against log mean circumradius
   // With an embedding (extrinsic = true): e_H (Theorem 3.4: ≥ 1), the Hausdorff distance max |q − π(q)| (Lemma 4.9:
   // 2) and the largest normal deviation (Lemma 4.9: 1), each against the mean circumradius.
   bool extrinsic = false;

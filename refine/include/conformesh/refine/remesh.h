@@ -15,8 +15,8 @@
 #include "conformesh/intrinsic/metric_discretization.h"
 #include "conformesh/intrinsic/smooth_metric.h"
 #include "conformesh/intrinsic/uniformization.h"
-#include "conformesh/refine/delaunay_refinement.h"
 #include "conformesh/intrinsic/vtk_writer.h"
+#include "conformesh/refine/delaunay_refinement.h"
 #include "conformesh/refine/refinement_quality.h"
 
 namespace conformesh::refine {
@@ -69,12 +69,12 @@ struct RemeshResult {
   // T1: the output triangulation; lengths are metric lengths of the edges' curves in the original metric (Euclidean
   // background: each triangle is the flat triangle with those lengths).
   intrinsic::IntrinsicTriangulation mesh;
-  std::vector<Eigen::Vector2d> chart;        // per vertex: chart coordinates (u, v)
-  std::vector<Eigen::Vector3d> reference;    // per vertex: point of the chart's pole-free reference surface
-  std::vector<Eigen::Vector3d> positions;    // per vertex: the embedding, when the metric has one; else empty
-  std::vector<double> lambda;                // per vertex: conformal factor interpolated at the vertex
-  std::vector<int> t0Face;                   // per vertex: face of T0 containing it
-  std::vector<Eigen::Vector3d> t0Bary;       // and its barycentric coordinates there
+  std::vector<Eigen::Vector2d> chart;      // per vertex: chart coordinates (u, v)
+  std::vector<Eigen::Vector3d> reference;  // per vertex: point of the chart's pole-free reference surface
+  std::vector<Eigen::Vector3d> positions;  // per vertex: the embedding, when the metric has one; else empty
+  std::vector<double> lambda;              // per vertex: conformal factor interpolated at the vertex
+  std::vector<int> t0Face;                 // per vertex: face of T0 containing it
+  std::vector<Eigen::Vector3d> t0Bary;     // and its barycentric coordinates there
   int t0Vertices = 0, t0Faces = 0;
   int invertedTriangles = 0;  // output triangles whose image in the chart's reference surface is inverted (should be 0)
   intrinsic::UniformizationReport uniformization;
