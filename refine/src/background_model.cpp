@@ -10,6 +10,40 @@ namespace conformesh::refine {
 
 using intrinsic::Background;
 
+namespace {
+
+// The chord w = q − p of two model points, with its dominant component recomputed from the other two. A point of the
+// sphere or hyperboloid near the origin (0, 0, 1) has z = 1 − O(r²): at r ≲ 10⁻⁸ the stored z carries no information
+// beyond x and y, and a plain difference q.z − p.z has absolute error ~u = 2⁻⁵³ where its true value is O(r·|w|).
+// Anything that uses the tilt of the chord then fails: the circumcentre of a triangle of size s, the normal of the
+// plane through its corners, is off by ~u/s — for s ≈ 10⁻⁸ at the size of the triangle itself (measured on the
+// uniformized cow, whose smallest edges are 2·10⁻¹³: a circumcentre landing on a corner, a zero-length edge, NaN
+// signposts, and a trace that never ended). The constraint of the model fixes that component instead:
+//   sphere      |p|² = |q|² = 1   ⇒  w_i (p_i + q_i) = −Σ_{j≠i} w_j (p_j + q_j),
+//   hyperboloid ⟨p,p⟩_M = ⟨q,q⟩_M ⇒  w_z (p_z + q_z) = w_x (p_x + q_x) + w_y (p_y + q_y)   (p_z + q_z ≥ 2),
+// so the chord is as accurate, relative to |w|, as the coordinates transverse to the axis i of the largest |p_i + q_i|
+// (near the origin: x and y, which keep full relative precision). On the sphere the division is by
+// |p_i + q_i| ≥ |p + q|/√3; below 1/2 (points more than ~2.6 rad apart, chords ≥ 1.9) the plain difference is already
+// accurate to round-off relative to |w| and is kept, since the points' own norm error u would be amplified there.
+Vec3 chord(Background g, const Vec3& p, const Vec3& q) {
+  Vec3 w = q - p;
+  if (g == Background::Hyperbolic) {
+    w.z() = (w.x() * (p.x() + q.x()) + w.y() * (p.y() + q.y())) / (p.z() + q.z());
+  } else if (g == Background::Spherical) {
+    const Vec3 s = p + q;
+    int i = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(s[k]) > std::abs(s[i])) i = k;
+    if (std::abs(s[i]) >= 0.5) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      w[i] = -(w[j] * s[j] + w[k] * s[k]) / s[i];
+    }
+  }
+  return w;
+}
+
+}  // namespace
+
 double BackgroundModel::inner(const Vec3& a, const Vec3& b) const {
   switch (g_) {
     case Background::Euclidean:
@@ -27,7 +61,7 @@ double BackgroundModel::norm(const Vec3& t) const {
 }
 
 double BackgroundModel::distance(const Vec3& p, const Vec3& q) const {
-  const Vec3 w = q - p;
+  const Vec3 w = chord(g_, p, q);
   switch (g_) {
     case Background::Euclidean:
       return std::hypot(w.x(), w.y());
@@ -41,7 +75,7 @@ double BackgroundModel::distance(const Vec3& p, const Vec3& q) const {
 }
 
 Vec3 BackgroundModel::tangentToward(const Vec3& p, const Vec3& q) const {
-  Vec3 w = q - p;
+  Vec3 w = chord(g_, p, q);
   switch (g_) {
     case Background::Euclidean:
       w.z() = 0;
@@ -133,7 +167,9 @@ Vec3 BackgroundModel::thirdVertex(const Vec3& P, const Vec3& Q, double angleAtP,
 }
 
 std::optional<Vec3> BackgroundModel::circumcenter(const Vec3& a, const Vec3& b, const Vec3& c) const {
-  const Vec3 u = b - a, v = c - a;
+  // Curved models: the normal of the plane through a, b, c is u × v, and its tilt is all in the chords' transverse
+  // components — hence the constrained chords (see chord()).
+  const Vec3 u = chord(g_, a, b), v = chord(g_, a, c);
   switch (g_) {
     case Background::Euclidean: {
       // Relative to a: the standard formula |u|²(v⊥) − |v|²(u⊥) over 2 u×v.

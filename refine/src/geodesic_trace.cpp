@@ -4,6 +4,7 @@
 #include "corner_angle.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "conformesh/intrinsic/errors.h"
@@ -17,6 +18,13 @@ using intrinsic::IntrinsicTriangulation;
 using intrinsic::kInvalid;
 
 namespace {
+
+std::string num(double x) {
+  std::ostringstream s;
+  s.precision(17);
+  s << x;
+  return s.str();
+}
 
 // Euclidean third vertex: with L = |AB|, a = |AX|, b = |BX|, X = A + x·u + y·u⊥ where x = (L² + a² − b²) / (2L) is the
 // projection on u = (B − A)/|B − A| and y = 2·area / L its height (area by Kahan's Heron: accurate for needles). The
@@ -66,6 +74,11 @@ namespace {
 TraceResult walk(const IntrinsicTriangulation& tri, const BackgroundModel& model, int face, std::array<Vec3, 3> P,
                  const Vec3& s, const Vec3& t, unsigned exitMask) {
   const HalfedgeMesh& m = tri.mesh;
+  // NaN coordinates would make every orientation test false (and the exact fallback meaningless): stop with the face.
+  if (!s.allFinite() || !t.allFinite() || !P[0].allFinite() || !P[1].allFinite() || !P[2].allFinite())
+    throw ConvergenceError("geodesic trace from face " + std::to_string(face) + ": start (" + num(s.x()) + ", " +
+                           num(s.y()) + ", " + num(s.z()) + ") or target (" + num(t.x()) + ", " + num(t.y()) + ", " +
+                           num(t.z()) + ") or the face's layout is not finite");
   TraceResult r;
   r.start = s;
   r.end = t;
@@ -112,7 +125,8 @@ TraceResult walk(const IntrinsicTriangulation& tri, const BackgroundModel& model
     }
     if (r.steps > maxSteps)
       throw ConvergenceError("geodesic trace did not reach its end after " + std::to_string(r.steps) +
-                             " triangles (last face " + std::to_string(face) + "): degenerate layout");
+                             " triangles (the cap 20·faces + 1000 = " + std::to_string(maxSteps) + "; last face " +
+                             std::to_string(face) + "): degenerate layout");
     // g runs Q = P[exitK+1] -> Pp = P[exitK] in the next face; its third vertex is unfolded on the far side.
     const Vec3 Pp = P[exitK], Q = P[(exitK + 1) % 3];
     const int kg = g % 3;
@@ -134,12 +148,31 @@ TraceResult traceFromPoint(const IntrinsicTriangulation& tri, const BackgroundMo
 TraceResult traceFromVertex(const IntrinsicTriangulation& tri, const Signposts& sp, const BackgroundModel& model, int v,
                             double theta, double length, int hint) {
   const HalfedgeMesh& m = tri.mesh;
+  // A non-finite direction or length (a circumcentre computed from a degenerate layout) matches no wedge; it would be
+  // taken below for a direction leaving the surface, so it is stopped here with the numbers that produced it.
+  if (!std::isfinite(theta) || !std::isfinite(length) || !(length >= 0))
+    throw ConvergenceError("geodesic trace from vertex " + std::to_string(v) + ": direction " + num(theta) +
+                           " rad, length " + num(length) + " (not finite): degenerate triangle at the start");
   Wedge w;
   if (hint != kInvalid) {
     const double off = sp.reduce(v, theta - sp.angle[hint]);
     if (off < fastCornerAngle(tri, hint)) w = {hint, off};
   }
   if (w.halfedge == kInvalid) w = findWedge(tri, sp, v, theta);
+  if (w.halfedge == kInvalid && !m.isBoundaryVertex(v)) {
+    // The wedges of an interior vertex cover its whole period, so every finite direction lies in one (findWedge
+    // absorbs round-off at the seams). Reaching this means the signposts or corner angles around v are corrupt
+    // (NaN after a degenerate insertion); the boundary fan walk below would never end on v's closed fan.
+    double sum = 0;
+    int h = m.vertexHalfedge(v);
+    do {
+      sum += fastCornerAngle(tri, h);
+      h = m.nextOutgoing(h);
+    } while (h != m.vertexHalfedge(v));
+    throw ConvergenceError("geodesic trace from interior vertex " + std::to_string(v) + ": direction " + num(theta) +
+                           " rad lies in no corner of its fan (signpost period " + num(sp.period[v]) +
+                           ", corner angles summing to " + num(sum) + "): corrupt signposts or a degenerate triangle");
+  }
   if (w.halfedge == kInvalid) {
     // A direction pointing out of the surface at a boundary vertex: the geodesic leaves at once through the nearer
     // of v's two boundary edges. The target is extrapolated in the plane of that edge's face.

@@ -5,9 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "conformesh/intrinsic/curvature.h"
+#include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/intrinsic_flips.h"
 
 namespace conformesh::refine {
@@ -81,6 +85,45 @@ Wedge findWedge(const IntrinsicTriangulation& tri, const Signposts& sp, int v, d
   return {};
 }
 
+namespace {
+
+std::string num(double x) {
+  std::ostringstream s;
+  s.precision(17);
+  s << x;
+  return s.str();
+}
+
+// New edge lengths must be finite and positive: a zero length (a point inserted on top of a vertex) or a NaN makes
+// every later corner angle and signpost at the new vertex NaN, and a NaN direction matches no wedge of any fan. Checked
+// before the mesh is touched, so the error leaves the triangulation as it was.
+void requireLengths(const char* what, int element, std::initializer_list<double> lengths) {
+  for (double l : lengths)
+    if (!(l > 0) || !std::isfinite(l)) {
+      std::string list;
+      for (double x : lengths) list += (list.empty() ? "" : ", ") + num(x);
+      throw ConvergenceError(std::string("refine: ") + what + " " + std::to_string(element) +
+                             " would get a new edge of length " + num(l) + " (new lengths " + list +
+                             "): the inserted point coincides with a vertex or was computed from a degenerate layout");
+    }
+}
+
+// The signposts the split set come from corner angles of the new triangles; a NaN among them (a triangle that is
+// invalid beyond round-off) would corrupt every later trace through these vertices. Only the stored angles are checked
+// (a few comparisons per insertion; re-evaluating the corner angles cost 2% of a whole refinement).
+void requireFiniteSignposts(const IntrinsicTriangulation& tri, const Signposts& sp, int p,
+                            std::initializer_list<int> faces) {
+  for (int f : faces)
+    for (int h = 3 * f; h < 3 * f + 3; ++h)
+      if (!std::isfinite(sp.angle[h]))
+        throw ConvergenceError("refine: inserting vertex " + std::to_string(p) + " gave halfedge " + std::to_string(h) +
+                               " a non-finite direction (its triangle has edge lengths " + num(tri.length(h)) + ", " +
+                               num(tri.length(HalfedgeMesh::next(h))) + ", " + num(tri.length(HalfedgeMesh::prev(h))) +
+                               "): degenerate triangle");
+}
+
+}  // namespace
+
 bool flipWithSignposts(IntrinsicTriangulation& tri, Signposts& sp, int e) {
   const HalfedgeMesh& m = tri.mesh;
   const int ha = m.edgeHalfedge(e), hb = m.twin(ha);
@@ -132,6 +175,10 @@ bool flipWithSignposts(IntrinsicTriangulation& tri, Signposts& sp, int e) {
 
 int splitFaceWithSignposts(IntrinsicTriangulation& tri, Signposts& sp, int f, const std::array<double, 3>& toCorner,
                            double angleToCorner0) {
+  requireLengths("splitting face", f, {toCorner[0], toCorner[1], toCorner[2]});
+  if (!std::isfinite(angleToCorner0))
+    throw ConvergenceError("refine: splitting face " + std::to_string(f) +
+                           ": the new vertex's direction to corner 0 is " + num(angleToCorner0));
   HalfedgeMesh& m = tri.mesh;
   const double sBc = sp.angle[3 * f + 1], sCa = sp.angle[3 * f + 2];
   const int p = m.splitFace(f);
@@ -152,6 +199,7 @@ int splitFaceWithSignposts(IntrinsicTriangulation& tri, Signposts& sp, int f, co
   sp.angle[3 * f + 2] = sp.reduce(p, angleToCorner0);                                   // p->a
   sp.angle[3 * f1 + 2] = sp.turned(tri, 3 * f + 2, fastCornerAngle(tri, 3 * f + 2));    // p->b
   sp.angle[3 * f2 + 2] = sp.turned(tri, 3 * f1 + 2, fastCornerAngle(tri, 3 * f1 + 2));  // p->c
+  requireFiniteSignposts(tri, sp, p, {f, f1, f2});
   return p;
 }
 
@@ -159,6 +207,13 @@ int splitEdgeWithSignposts(IntrinsicTriangulation& tri, Signposts& sp, int e, do
                            double pd, double angleToB, double turnAtA) {
   HalfedgeMesh& m = tri.mesh;
   const int ha = m.edgeHalfedge(e), hb = m.twin(ha);
+  if (hb == kInvalid)
+    requireLengths("splitting edge", e, {ap, pb, pc});
+  else
+    requireLengths("splitting edge", e, {ap, pb, pc, pd});
+  if (!std::isfinite(angleToB) || !std::isfinite(turnAtA))
+    throw ConvergenceError("refine: splitting edge " + std::to_string(e) + ": the new vertex's directions are " +
+                           num(angleToB) + ", " + num(turnAtA));
   const int na = HalfedgeMesh::next(ha), pa = HalfedgeMesh::prev(ha);
   const double sNa = sp.angle[na];
   const double sNb = hb == kInvalid ? 0.0 : sp.angle[HalfedgeMesh::next(hb)];
@@ -187,6 +242,9 @@ int splitEdgeWithSignposts(IntrinsicTriangulation& tri, Signposts& sp, int e, do
     sp.angle[r2] = sp.turned(tri, pbh, fastCornerAngle(tri, pbh));
     sp.angle[r0] = sp.turned(tri, na, fastCornerAngle(tri, na));
     sp.angle[nb] = sp.turned(tri, r0, fastCornerAngle(tri, r0));
+    requireFiniteSignposts(tri, sp, p, {HalfedgeMesh::face(ha), nF0, HalfedgeMesh::face(hb), nF0 + 1});
+  } else {
+    requireFiniteSignposts(tri, sp, p, {HalfedgeMesh::face(ha), nF0});
   }
   return p;
 }

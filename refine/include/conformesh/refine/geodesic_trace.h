@@ -34,7 +34,9 @@ struct TraceResult {
 
 // The geodesic from vertex v leaving in direction theta (v's signpost frame) with length `length`. `hint`, if given,
 // is an outgoing halfedge of v whose wedge is tried first (the refinement knows it: it traces from a triangle's corner
-// toward that triangle's circumcentre), sparing the walk around v.
+// toward that triangle's circumcentre), sparing the walk around v. Throws ConvergenceError naming v when theta or the
+// length is not finite, or when v is an interior vertex and theta lies in none of its corners (corrupt signposts);
+// both walks throw it, naming the face and the cap, after 20·faces + 1000 triangles or on non-finite coordinates.
 TraceResult traceFromVertex(const intrinsic::IntrinsicTriangulation& tri, const Signposts& sp,
                             const BackgroundModel& model, int v, double theta, double length,
                             int hint = intrinsic::kInvalid);

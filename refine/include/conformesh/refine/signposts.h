@@ -40,7 +40,9 @@ struct Wedge {
 Wedge findWedge(const intrinsic::IntrinsicTriangulation& tri, const Signposts& sp, int v, double theta);
 
 // === updates. Each wraps the HalfedgeMesh mutation and re-derives the signposts of the halfedges it created or moved,
-// following the slot layout documented in halfedge_mesh.cpp.
+// following the slot layout documented in halfedge_mesh.cpp. The splits throw ConvergenceError (naming the face or edge
+// and the lengths) when a new edge length is not finite and positive — before the mesh changes — or when a direction
+// they set comes out non-finite: a point inserted on a vertex or computed from a degenerate layout.
 
 // flipEdge (intrinsic_flips.h) plus signposts. Returns false when the edge cannot be flipped.
 bool flipWithSignposts(intrinsic::IntrinsicTriangulation& tri, Signposts& sp, int e);
