@@ -10,11 +10,11 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "report_json.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh_io.h"
 #include "conformesh/refine/delaunay_refinement.h"
 #include "conformesh/refine/refinement_quality.h"
+#include "report_json.h"
 
 namespace conformesh::apps {
 
@@ -27,6 +27,8 @@ struct RefineArgs {
   bool uniform = false, json = false, ascii = false, offCenters = false;
   std::string boundary = "auto";
   std::int64_t maxInsertions = 50'000'000;
+  int smoothing = refine::RefineOptions{}.smoothingPasses;
+  std::string smoothingRule = "odt";
 };
 
 void run(const RefineArgs& args) {
@@ -39,6 +41,8 @@ void run(const RefineArgs& args) {
   opt.ratioBound = args.ratio;
   opt.maxInsertions = args.maxInsertions;
   opt.offCenters = args.offCenters;
+  opt.smoothingPasses = args.smoothing;
+  opt.smoothingRule = refine::parseSmoothingRule(args.smoothingRule);
   opt.boundarySplit = args.boundary == "circle"     ? refine::BoundarySplit::Circle
                       : args.boundary == "geodesic" ? refine::BoundarySplit::Geodesic
                                                     : refine::BoundarySplit::Auto;
@@ -115,18 +119,25 @@ void run(const RefineArgs& args) {
                  {"flips", s.flips},
                  {"trace_steps", s.traceSteps},
                  {"boundary_loops", s.boundaryLoops},
-                 {"circle_loops", s.circleLoops}}},
+                 {"circle_loops", s.circleLoops},
+                 {"smoothing_passes", args.smoothing},
+                 {"smoothing_moves", s.smoothingMoves},
+                 {"smoothing_refused", s.smoothingRefused},
+                 {"insertions_after_smoothing", s.insertionsAfterSmoothing}}},
                {"quality", qualityJson(q)}});
     return;
   }
   std::cout << args.input << " -> " << args.output << " (" << intrinsic::toString(tri.background) << ", " << seconds
             << " s)\n"
             << "  vertices " << q.vertices << " (input " << s.inputVertices << "), triangles " << q.triangles << '\n'
-            << "  inserted: " << s.circumcenterInsertions << " circumcentres, " << s.offCenterInsertions << " off-centres, "
-            << s.centroidInsertions
-            << " centroids, " << s.boundarySplits << " boundary splits (" << s.circleLoops << " of " << s.boundaryLoops
-            << " boundary loops on their circle); " << s.flips << " flips\n"
-            << "  smallest angle " << q.minAngleDeg << "°, mean per-triangle smallest angle " << q.meanMinAngleDeg
+            << "  inserted: " << s.circumcenterInsertions << " circumcentres, " << s.offCenterInsertions
+            << " off-centres, " << s.centroidInsertions << " centroids, " << s.boundarySplits << " boundary splits ("
+            << s.circleLoops << " of " << s.boundaryLoops << " boundary loops on their circle); " << s.flips
+            << " flips\n";
+  if (args.smoothing > 0)
+    std::cout << "  smoothing: " << args.smoothing << " passes, " << s.smoothingMoves << " vertex moves ("
+              << s.smoothingRefused << " refused), " << s.insertionsAfterSmoothing << " insertions after smoothing\n";
+  std::cout << "  smallest angle " << q.minAngleDeg << "°, mean per-triangle smallest angle " << q.meanMinAngleDeg
             << "°, " << 100 * q.fractionBelow30 << "% of triangles under 30°\n"
             << "  circumradius: max " << q.maxCircumradius << ", mean " << q.meanCircumradius
             << " (background metric); max circumradius/shortest edge " << q.maxRadiusEdgeRatio << '\n'
@@ -142,7 +153,8 @@ void run(const RefineArgs& args) {
 void registerRefineCommand(CLI::App& app) {
   auto args = std::make_shared<RefineArgs>();
   CLI::App* sub = app.add_subcommand(
-      "refine", "Delaunay refinement of a constant-curvature triangulation (paper §4.2), graded by the conformal factor");
+      "refine",
+      "Delaunay refinement of a constant-curvature triangulation (paper §4.2), graded by the conformal factor");
   sub->footer(
       "The input is a uniformized triangulation T0* (edge lengths in its background geometry: euclidean for flat\n"
       "tori, disks and circle domains, spherical for the unit sphere, hyperbolic for genus >= 2). Bad triangles are\n"
@@ -170,6 +182,15 @@ void registerRefineCommand(CLI::App& app) {
   sub->add_flag("--off-centers", args->offCenters,
                 "Split bad-shaped triangles at Üngör's off-centre instead of the circumcentre when nearer (Euclidean "
                 "background; same bounds, usually fewer vertices when grading drives the refinement)");
+  sub->add_option("--smoothing", args->smoothing,
+                  "Smoothing passes after refinement: each moves every inserted interior vertex within its star to "
+                  "raise its triangles' smallest angles (never lowering the star's smallest angle; input locations "
+                  "re-traced), restores Delaunay and re-runs the refinement, so the bounds still hold")
+      ->capture_default_str();
+  sub->add_option("--smoothing-rule", args->smoothingRule,
+                  "Start of each vertex's search: odt (optimal Delaunay point: area-weighted circumcentres, default) "
+                  "or centroid (area-weighted centroids)")
+      ->check(CLI::IsMember({"odt", "centroid"}));
   sub->add_option("--max-insertions", args->maxInsertions, "Stop with an error after this many insertions");
   sub->add_option("-o,--output", args->output, "Output .ply (edge lengths, background, input locations)")->required();
   sub->add_flag("--json", args->json, "Print the statistics and quality report as JSON on stdout");

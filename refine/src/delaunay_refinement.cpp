@@ -5,6 +5,7 @@
 #include "corner_angle.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <deque>
 #include <optional>
@@ -91,6 +92,9 @@ class Refiner {
   std::vector<int> encroachedByPoint(const TraceResult& trace) const;
   std::optional<Vec3> frontalPoint(int f, const std::array<Vec3, 3>& P, const Vec3& c) const;
   void countInsertion();
+  // === the loop
+  void drain();
+  void smoothAndRefine();
 
   const IntrinsicTriangulation& in_;
   RefineOptions opt_;
@@ -122,6 +126,7 @@ class Refiner {
   mutable std::vector<int> cavityVisited_;
   std::vector<int> flipStack_;
   std::int64_t insertions_ = 0;
+  std::chrono::steady_clock::time_point lastProgress_ = std::chrono::steady_clock::now();
 };
 
 void Refiner::validate() {
@@ -140,6 +145,8 @@ void Refiner::validate() {
       throw InputError("refine: the conformal factor at vertex " + std::to_string(v) + " is not finite (" +
                        num(opt_.lambda[v]) + ")");
   if (!(opt_.maxInsertions > 0)) throw InputError("refine: maxInsertions must be positive");
+  if (opt_.smoothingPasses < 0)
+    throw InputError("refine: smoothingPasses must be at least 0, got " + std::to_string(opt_.smoothingPasses));
 }
 
 void Refiner::setupBoundary() {
@@ -378,8 +385,16 @@ void Refiner::countInsertion() {
     throw ConvergenceError("refine: stopped after " + std::to_string(opt_.maxInsertions) +
                            " insertions (the cap maxInsertions): epsilon " + num(opt_.epsilon) +
                            " is too small for this surface, or raise the cap");
-  if (opt_.progress && opt_.progressEvery > 0 && insertions_ % opt_.progressEvery == 0)
+  if (!opt_.progress) return;
+  // Every progressEvery insertions, and at least every 2 s of work (checked every 64 insertions, far below the cost of
+  // the insertions themselves), so that a long run on a surface with slow insertions still reports.
+  bool report = opt_.progressEvery > 0 && insertions_ % opt_.progressEvery == 0;
+  if (!report && insertions_ % 64 == 0)
+    report = std::chrono::steady_clock::now() - lastProgress_ >= std::chrono::seconds(2);
+  if (report) {
+    lastProgress_ = std::chrono::steady_clock::now();
     opt_.progress({insertions_, tri_.mesh.nVertices(), faceQueue_.size()});
+  }
 }
 
 void Refiner::afterInsertion(int p) {
@@ -643,9 +658,17 @@ void Refiner::processFace(int f) {
   auto traceTo = [&](const Vec3& x, double& theta, double& r) {
     r = model_.distance(BackgroundModel::origin(), x);
     theta = sp_.turned(tri_, hs, std::atan2(x.y(), x.x()));
-    TraceResult t = traceFromVertex(tri_, sp_, model_, v, theta, r, hs);
-    res_.statistics.traceSteps += t.steps;
-    return t;
+    try {
+      TraceResult t = traceFromVertex(tri_, sp_, model_, v, theta, r, hs);
+      res_.statistics.traceSteps += t.steps;
+      return t;
+    } catch (const ConvergenceError& err) {
+      // The trace names the vertex / face and the cap it hit; add which refinement step it served.
+      throw ConvergenceError("refine (epsilon " + num(opt_.epsilon) + ", B " + num(opt_.ratioBound) + ", after " +
+                             std::to_string(insertions_) + " insertions): locating the new point of face " +
+                             std::to_string(f) + " (circumradius " + num(R) + ") from its vertex " + std::to_string(v) +
+                             ": " + err.what());
+    }
   };
   double theta = 0, r = 0;
   TraceResult tr = traceTo(target, theta, r);
@@ -765,7 +788,39 @@ RefineResult Refiner::run() {
   for (int f = 0; f < tri_.mesh.nFaces(); ++f) pushFace(f);
   for (int e = 0; e < tri_.mesh.nEdges(); ++e)
     if (tri_.mesh.isBoundaryEdge(e)) segmentQueue_.push_back(e);
+  drain();
+  smoothAndRefine();
+  return std::move(res_);
+}
 
+void Refiner::smoothAndRefine() {
+  SmoothingOptions so;
+  so.rule = opt_.smoothingRule;
+  so.epsilon = opt_.epsilon;
+  so.ratioBound = opt_.ratioBound;
+  const std::vector<double> noLambda;
+  const std::int64_t before = insertions_;
+  for (int pass = 0; pass < opt_.smoothingPasses; ++pass) {
+    const SmoothingStatistics s =
+        smoothFreeVertices(tri_, sp_, res_.locations, res_.lambda, res_.statistics.inputVertices, *inputPtr_,
+                           uniform_ ? noLambda : opt_.lambda, so);
+    res_.statistics.smoothingMoves += s.moved;
+    res_.statistics.smoothingRefused += s.invalid + s.rejected;
+    // The moves keep every star valid but not necessarily Delaunay: Lawson's flips over all edges, then the refinement
+    // loop over every face and segment, so the output meets the bounds exactly as an unsmoothed one does (the loop
+    // stops only when no triangle is bad; termination: the packing argument of §1 with the smoothed mesh as input).
+    std::vector<int> all(tri_.mesh.nEdges());
+    for (int e = 0; e < tri_.mesh.nEdges(); ++e) all[e] = e;
+    restoreDelaunay(all);
+    for (int f = 0; f < tri_.mesh.nFaces(); ++f) pushFace(f);
+    for (int e = 0; e < tri_.mesh.nEdges(); ++e)
+      if (tri_.mesh.isBoundaryEdge(e)) segmentQueue_.push_back(e);
+    drain();
+  }
+  res_.statistics.insertionsAfterSmoothing = insertions_ - before;
+}
+
+void Refiner::drain() {
   for (;;) {
     if (!segmentQueue_.empty()) {
       const int e = segmentQueue_.front();
@@ -786,7 +841,6 @@ RefineResult Refiner::run() {
     faceQueued_[f] = 0;
     processFace(f);
   }
-  return std::move(res_);
 }
 
 }  // namespace

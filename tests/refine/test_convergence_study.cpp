@@ -1,10 +1,10 @@
 // Tests for convergence_study.h: the paper's claims measured by log–log fits over a sweep of meshes (Theorem 3.4,
 // §6): e_G falls at least linearly in the mean circumradius, the mean circumradius like 1/√vertices, the area error
 // like ε²; and on every mesh the smallest angle (original metric) is ≥ 20.7°, no triangle of the map back is inverted,
-// and Gauss–Bonnet holds to 1e-9. The mean smallest angle is not bounded by any theorem: per mesh it scatters by about
-// ±1° between nearby ε (Kerr a/M = 0.95: 46.8°, 48.7°, 47.6°, 46.0° at the four sizes below; ellipsoid 52–55°), so the
-// test holds the sweep's average to the paper's 46° and each mesh to 45° — issue 6 asks for 46° on every mesh, which
-// is not met on every level (docs/studies.md).
+// and Gauss–Bonnet holds to 1e-9. The mean smallest angle is not bounded by any theorem; with the default smoothing
+// pass (ConvergenceOptions::remesh.refinement.smoothingPasses = 1, vertex_smoothing.h) every mesh of the studies in
+// docs/studies.md has it ≥ 46.7° (unsmoothed it scatters by ±1° between nearby ε and dips to 44.7°–46°), so each mesh
+// is held to issue 6's 46°, and the sweep's average to the paper's 46.5°.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -32,11 +32,11 @@ TEST_CASE("convergence sweeps on the ellipsoid and the Kerr horizon at a/M = 0.9
     for (const ConvergenceLevel& L : s.levels) {
       INFO(L.vertices << " vertices");
       CHECK(L.quality.minAngleDeg >= 20.7);
-      CHECK(L.quality.meanMinAngleDeg >= 45);
+      CHECK(L.quality.meanMinAngleDeg >= 46);
       meanOfMeans += L.quality.meanMinAngleDeg / s.levels.size();
       CHECK(L.invertedTriangles == 0);
       CHECK(std::abs(L.quality.gaussBonnetResidual) < 1e-9);
     }
-    CHECK(meanOfMeans >= 46);
+    CHECK(meanOfMeans >= 46.5);
   }
 }

@@ -573,3 +573,68 @@ TEST_CASE("frontal placement (Rebay) meets the same bounds in every geometry, wi
     CHECK(worst < 1e-10);
   }
 }
+
+TEST_CASE("smoothing passes keep the bounds, Delaunay and the input locations, and raise the mean smallest angle") {
+  // RefineOptions::smoothingPasses moves free vertices (vertex_smoothing.h), restores Delaunay and re-runs the
+  // refinement loop, so every bound must hold as without smoothing; the located points must still reproduce every
+  // edge length (disk: plane positions, sphere: great circles), and on the graded disk (λ = 1.5x, linear, so its
+  // interpolant is exact) every circumradius must stay below ε·e^(−λ) at the circumcentre, computed from the
+  // located points.
+  const DiskSurface d = disk(3);
+  const SphereSurface sph = sphere(1);
+  const OctagonSurface oct = genus2Octagon();
+  const FlatTorus torus = flatTorus({1, 0}, {0.37, 0.61}, 5);
+  struct Case {
+    const IntrinsicTriangulation* in;
+    double eps;
+    bool graded;
+  };
+  for (const Case& c : {Case{&d.tri, 0.08, true}, Case{&sph.tri, 0.05, false}, Case{&oct.tri, 0.15, false},
+                        Case{&torus.tri, 0.03, false}}) {
+    RefineOptions o;
+    o.epsilon = c.eps;
+    double lambdaMin = 0;
+    if (c.graded)
+      for (const auto& p : d.positions) {
+        o.lambda.push_back(1.5 * p.x());
+        lambdaMin = std::min(lambdaMin, 1.5 * p.x());
+      }
+    INFO(intrinsic::toString(c.in->background) << (c.graded ? " graded" : " uniform") << ", eps " << c.eps);
+    const RefineResult plain = refineDelaunay(*c.in, o);
+    o.smoothingPasses = 3;
+    const RefineResult r = refineDelaunay(*c.in, o);
+    checkBounds(*c.in, r, c.eps * std::exp(-lambdaMin), std::sqrt(2.0));
+    CHECK(r.statistics.smoothingMoves > 0);
+    const double before = measureQuality(plain.triangulation).meanMinAngleDeg;
+    const double after = measureQuality(r.triangulation).meanMinAngleDeg;
+    INFO("mean smallest angle " << before << "° -> " << after << "°, moves " << r.statistics.smoothingMoves
+                                << ", insertions after smoothing " << r.statistics.insertionsAfterSmoothing);
+    CHECK(after > before + 0.5);
+    const auto& m = r.triangulation.mesh;
+    double worst = 0, worstRatio = 0;
+    for (int e = 0; e < m.nEdges(); ++e) {
+      const int h = m.edgeHalfedge(e);
+      const InputLocation &a = r.locations[m.tail(h)], &b = r.locations[m.tip(h)];
+      double dist = -1;
+      if (c.in == &d.tri) dist = (d.locate(a) - d.locate(b)).norm();
+      if (c.in == &sph.tri) dist = 2 * std::asin((sph.locate(a) - sph.locate(b)).norm() / 2);
+      if (c.in == &torus.tri) dist = torus.torusDistance(torus.locate(a), torus.locate(b));
+      if (dist >= 0) worst = std::max(worst, std::abs(dist - r.triangulation.edgeLengths[e]));
+    }
+    CHECK(worst < 1e-10);
+    if (c.graded) {
+      for (int f = 0; f < m.nFaces(); ++f) {
+        Eigen::Vector2d p[3];
+        for (int k = 0; k < 3; ++k) p[k] = d.locate(r.locations[m.faceVertex(f, k)]);
+        const Eigen::Vector2d u = p[1] - p[0], v = p[2] - p[0];
+        const double det = 2 * (u.x() * v.y() - u.y() * v.x());
+        const Eigen::Vector2d cc = p[0] + Eigen::Vector2d(v.y() * u.squaredNorm() - u.y() * v.squaredNorm(),
+                                                          u.x() * v.squaredNorm() - v.x() * u.squaredNorm()) /
+                                              det;
+        worstRatio =
+            std::max(worstRatio, intrinsic::faceCircumradius(r.triangulation, f) / (c.eps * std::exp(-1.5 * cc.x())));
+      }
+      CHECK(worstRatio <= 1 + 1e-9);
+    }
+  }
+}

@@ -25,6 +25,7 @@
 
 #include "conformesh/intrinsic/intrinsic_triangulation.h"
 #include "conformesh/refine/input_location.h"
+#include "conformesh/refine/vertex_smoothing.h"
 
 namespace conformesh::refine {
 
@@ -62,6 +63,14 @@ struct RefineOptions {
   // ε. Same bounds (they are the stopping criterion) and the same termination argument (the point lies inside the
   // bad triangle's empty circumdisk, at least the target size away from every vertex). All backgrounds.
   bool frontal = false;
+  // Smoothing passes after refinement (vertex_smoothing.h). Each pass moves every inserted interior vertex within its
+  // star to the point, searched from the star's optimal-Delaunay point (`smoothingRule`: or its centroid average),
+  // that most raises its triangles' smallest angles, never lowering the star's smallest angle nor breaking the bounds;
+  // re-traces its input location; then restores Delaunay by flips and re-runs the refinement loop, so the output
+  // meets the bounds as without smoothing (they remain the stopping criterion). Raises the mean smallest angle
+  // (docs/refinement.md §6); 0 = the paper's algorithm, unsmoothed.
+  int smoothingPasses = 0;
+  SmoothingRule smoothingRule = SmoothingRule::OptimalDelaunay;
   // A loop counts as cocircular when every vertex of its layout lies within this distance (relative to the radius) of
   // the fitted circle. 1e-8 is above the round-off of laying out a loop of 10⁶ edges by lengths and turning
   // angles (headings accumulate ~10⁶ · 1e-16 rad, i.e. ~1e-10) and far below any visible departure from a circle.
@@ -72,7 +81,7 @@ struct RefineOptions {
   double minCircumradius = 0;
   // Passed to the Delaunay test (delaunayMargin); see intrinsic_flips.h.
   double delaunayTolerance = 1e-12;
-  // Called every `progressEvery` insertions (may be empty).
+  // Called every `progressEvery` insertions and at least every 2 s of refinement (may be empty).
   std::function<void(const RefineProgress&)> progress;
   std::int64_t progressEvery = 100000;
 };
@@ -89,6 +98,11 @@ struct RefineStatistics {
   std::int64_t traceSteps = 0;
   int boundaryLoops = 0;
   int circleLoops = 0;  // loops split on their circle
+  // Smoothing (RefineOptions::smoothingPasses), summed over the passes: vertex moves made and refused, and the
+  // insertions of the refinement loops re-run after the passes (included in the insertion counts above).
+  std::int64_t smoothingMoves = 0;
+  std::int64_t smoothingRefused = 0;
+  std::int64_t insertionsAfterSmoothing = 0;
 };
 
 struct RefineResult {
