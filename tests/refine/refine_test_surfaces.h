@@ -1,8 +1,10 @@
 // refine_test_surfaces.h — constant-curvature triangulations with known geometry for the refinement tests: a flat torus
 // of any lattice (with the plane position of every vertex), a sphere with great-circle lengths (with unit-vector
-// positions), a hyperbolic genus-2 surface glued from the regular octagon with angles π/4, and a planar unit disk.
+// positions), a hyperbolic genus-2 surface glued from the regular octagon with angles π/4, and a planar unit disk; and
+// the checks the refinement tests share (located points against closed-form distances, the signpost invariant).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <vector>
@@ -66,6 +68,7 @@ struct FlatTorus {
   }
   // Distance on the torus between two plane points.
   double torusDistance(std::complex<double> a, std::complex<double> b) const { return std::abs(nearest(b, a) - a); }
+  double distance(const InputLocation& a, const InputLocation& b) const { return torusDistance(locate(a), locate(b)); }
 };
 
 inline FlatTorus flatTorus(std::complex<double> w1, std::complex<double> w2, int n) {
@@ -87,6 +90,10 @@ struct SphereSurface {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (int k = 0; k < 3; ++k) p += loc.bary[k] * positions[tri.mesh.faceVertex(loc.face, k)];
     return p.normalized();
+  }
+  // Great-circle distance between two located points.
+  double distance(const InputLocation& a, const InputLocation& b) const {
+    return 2 * std::asin((locate(a) - locate(b)).norm() / 2);
   }
 };
 
@@ -151,6 +158,7 @@ struct DiskSurface {
     for (int k = 0; k < 3; ++k) p += loc.bary[k] * positions[tri.mesh.faceVertex(loc.face, k)];
     return p;
   }
+  double distance(const InputLocation& a, const InputLocation& b) const { return (locate(a) - locate(b)).norm(); }
 };
 
 inline DiskSurface disk(int rings) {
@@ -202,6 +210,36 @@ inline DiskSurface annulus(int rings) {
   DiskSurface s{intrinsic::toTriangulation(d), {}};
   for (const auto& p : d.positions) s.positions.emplace_back(p.x(), p.y());
   return s;
+}
+
+// === checks shared by the refinement tests
+
+// The largest |closed-form distance between an edge's located ends − the edge's length| over a refined triangulation
+// of `surface` (FlatTorus, SphereSurface or DiskSurface): every recorded input location must lie where the intrinsic
+// lengths say it does.
+template <class Surface>
+double worstLocatedLengthError(const Surface& surface, const IntrinsicTriangulation& t,
+                               const std::vector<InputLocation>& locations) {
+  double worst = 0;
+  for (int e = 0; e < t.mesh.nEdges(); ++e) {
+    const int h = t.mesh.edgeHalfedge(e);
+    const double d = surface.distance(locations[t.mesh.tail(h)], locations[t.mesh.tip(h)]);
+    worst = std::max(worst, std::abs(d - t.edgeLengths[e]));
+  }
+  return worst;
+}
+
+// Largest violation of the signpost invariant: consecutive outgoing halfedges differ by the corner angle between them.
+inline double signpostDefect(const IntrinsicTriangulation& t, const Signposts& sp) {
+  double worst = 0;
+  for (int h = 0; h < t.mesh.nHalfedges(); ++h) {
+    const int g = t.mesh.nextOutgoing(h);
+    if (g == intrinsic::kInvalid) continue;
+    const double d =
+        std::remainder(sp.angle[g] - sp.angle[h] - intrinsic::cornerAngle(t, h), sp.period[t.mesh.tail(h)]);
+    worst = std::max(worst, std::abs(d));
+  }
+  return worst;
 }
 
 }  // namespace conformesh::refine::testing

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <functional>
 #include <iomanip>
 
 #include "conformesh/intrinsic/curvature.h"
@@ -22,6 +23,22 @@ using intrinsic::IntrinsicTriangulation;
 namespace {
 
 constexpr double kDeg = 180 / M_PI;
+
+// The located-points check of a surface with closed-form distances, as a function of the refinement's result.
+template <class Surface>
+std::function<double(const RefineResult&)> locatedError(const Surface& s) {
+  return [&s](const RefineResult& r) { return worstLocatedLengthError(s, r.triangulation, r.locations); };
+}
+
+// The graded disk of the tests: λ = 1.5·x at the input vertices (linear, so its interpolant is exact). Returns min λ.
+double gradeLinearly(const DiskSurface& d, RefineOptions& o) {
+  double lambdaMin = 0;
+  for (const auto& p : d.positions) {
+    o.lambda.push_back(1.5 * p.x());
+    lambdaMin = std::min(lambdaMin, 1.5 * p.x());
+  }
+  return lambdaMin;
+}
 
 // The properties every refinement output must have, whatever the geometry (λ ≡ 0).
 void checkBounds(const IntrinsicTriangulation& in, const RefineResult& r, double eps, double B) {
@@ -131,14 +148,7 @@ TEST_CASE("flat tori of skewed lattices refine to the bounds, isometrically, wit
     checkBounds(torus.tri, r, eps, std::sqrt(2.0));
     CHECK(intrinsic::totalArea(r.triangulation) == Approx(intrinsic::totalArea(torus.tri)).epsilon(1e-12));
     // Every edge's length equals the torus distance between its endpoints' input locations.
-    double worst = 0;
-    const auto& m = r.triangulation.mesh;
-    for (int e = 0; e < m.nEdges(); ++e) {
-      const int h = m.edgeHalfedge(e);
-      const double d = torus.torusDistance(torus.locate(r.locations[m.tail(h)]), torus.locate(r.locations[m.tip(h)]));
-      worst = std::max(worst, std::abs(d - r.triangulation.edgeLengths[e]));
-    }
-    CHECK(worst < 1e-10);
+    CHECK(worstLocatedLengthError(torus, r.triangulation, r.locations) < 1e-10);
   }
 }
 
@@ -152,14 +162,7 @@ TEST_CASE("the sphere refines with great-circle lengths; locations lie at the ri
     const RefineResult r = refineDelaunay(s.tri, o);
     checkBounds(s.tri, r, eps, B);
     CHECK(intrinsic::totalArea(r.triangulation) == Approx(intrinsic::totalArea(s.tri)).epsilon(1e-11));
-    double worst = 0;
-    const auto& m = r.triangulation.mesh;
-    for (int e = 0; e < m.nEdges(); ++e) {
-      const int h = m.edgeHalfedge(e);
-      const Eigen::Vector3d a = s.locate(r.locations[m.tail(h)]), b = s.locate(r.locations[m.tip(h)]);
-      worst = std::max(worst, std::abs(2 * std::asin((a - b).norm() / 2) - r.triangulation.edgeLengths[e]));
-    }
-    CHECK(worst < 1e-10);
+    CHECK(worstLocatedLengthError(s, r.triangulation, r.locations) < 1e-10);
   }
 }
 
@@ -537,40 +540,28 @@ TEST_CASE("frontal placement (Rebay) meets the same bounds in every geometry, wi
   const SphereSurface sph = sphere(1);
   const OctagonSurface oct = genus2Octagon();
   const FlatTorus torus = flatTorus({1, 0}, {0.37, 0.61}, 5);
+  // `located` checks the recorded input locations against the surface's closed-form distances (none for the octagon).
   struct Case {
     const IntrinsicTriangulation* in;
     double eps;
     bool graded;
+    std::function<double(const RefineResult&)> located;
   };
   // The ε are chosen so that proper frontal points occur (measured: 3 to a few hundred per run); on a coarse input
   // refined only a little none may (no triangle is far enough above its target next to a good one), and then the
   // option only changes the order in which bad triangles are served.
-  for (const Case& c : {Case{&d.tri, 0.05, false}, Case{&d.tri, 0.15, true}, Case{&sph.tri, 0.05, false},
-                        Case{&oct.tri, 0.15, false}, Case{&torus.tri, 0.04, false}}) {
+  for (const Case& c : {Case{&d.tri, 0.05, false, locatedError(d)}, Case{&d.tri, 0.15, true, locatedError(d)},
+                        Case{&sph.tri, 0.05, false, locatedError(sph)}, Case{&oct.tri, 0.15, false, nullptr},
+                        Case{&torus.tri, 0.04, false, locatedError(torus)}}) {
     RefineOptions o;
     o.epsilon = c.eps;
     o.frontal = true;
-    double lambdaMin = 0;
-    if (c.graded)
-      for (const auto& p : d.positions) {
-        o.lambda.push_back(1.5 * p.x());
-        lambdaMin = std::min(lambdaMin, 1.5 * p.x());
-      }
+    const double lambdaMin = c.graded ? gradeLinearly(d, o) : 0;
     INFO(intrinsic::toString(c.in->background) << (c.graded ? " graded" : " uniform") << ", eps " << c.eps);
     const RefineResult r = refineDelaunay(*c.in, o);
     checkBounds(*c.in, r, c.eps * std::exp(-lambdaMin), std::sqrt(2.0));
     CHECK(r.statistics.frontalInsertions > 0);
-    const auto& m = r.triangulation.mesh;
-    double worst = 0;
-    for (int e = 0; e < m.nEdges(); ++e) {
-      const int h = m.edgeHalfedge(e);
-      const InputLocation &a = r.locations[m.tail(h)], &b = r.locations[m.tip(h)];
-      double dist = -1;
-      if (c.in == &d.tri) dist = (d.locate(a) - d.locate(b)).norm();
-      if (c.in == &sph.tri) dist = 2 * std::asin((sph.locate(a) - sph.locate(b)).norm() / 2);
-      if (dist >= 0) worst = std::max(worst, std::abs(dist - r.triangulation.edgeLengths[e]));
-    }
-    CHECK(worst < 1e-10);
+    if (c.located) CHECK(c.located(r) < 1e-10);
   }
 }
 
@@ -584,21 +575,18 @@ TEST_CASE("smoothing passes keep the bounds, Delaunay and the input locations, a
   const SphereSurface sph = sphere(1);
   const OctagonSurface oct = genus2Octagon();
   const FlatTorus torus = flatTorus({1, 0}, {0.37, 0.61}, 5);
+  // `located` checks the recorded input locations against the surface's closed-form distances (none for the octagon).
   struct Case {
     const IntrinsicTriangulation* in;
     double eps;
     bool graded;
+    std::function<double(const RefineResult&)> located;
   };
-  for (const Case& c : {Case{&d.tri, 0.08, true}, Case{&sph.tri, 0.05, false}, Case{&oct.tri, 0.15, false},
-                        Case{&torus.tri, 0.03, false}}) {
+  for (const Case& c : {Case{&d.tri, 0.08, true, locatedError(d)}, Case{&sph.tri, 0.05, false, locatedError(sph)},
+                        Case{&oct.tri, 0.15, false, nullptr}, Case{&torus.tri, 0.03, false, locatedError(torus)}}) {
     RefineOptions o;
     o.epsilon = c.eps;
-    double lambdaMin = 0;
-    if (c.graded)
-      for (const auto& p : d.positions) {
-        o.lambda.push_back(1.5 * p.x());
-        lambdaMin = std::min(lambdaMin, 1.5 * p.x());
-      }
+    const double lambdaMin = c.graded ? gradeLinearly(d, o) : 0;
     INFO(intrinsic::toString(c.in->background) << (c.graded ? " graded" : " uniform") << ", eps " << c.eps);
     const RefineResult plain = refineDelaunay(*c.in, o);
     o.smoothingPasses = 3;
@@ -610,19 +598,10 @@ TEST_CASE("smoothing passes keep the bounds, Delaunay and the input locations, a
     INFO("mean smallest angle " << before << "° -> " << after << "°, moves " << r.statistics.smoothingMoves
                                 << ", insertions after smoothing " << r.statistics.insertionsAfterSmoothing);
     CHECK(after > before + 0.5);
-    const auto& m = r.triangulation.mesh;
-    double worst = 0, worstRatio = 0;
-    for (int e = 0; e < m.nEdges(); ++e) {
-      const int h = m.edgeHalfedge(e);
-      const InputLocation &a = r.locations[m.tail(h)], &b = r.locations[m.tip(h)];
-      double dist = -1;
-      if (c.in == &d.tri) dist = (d.locate(a) - d.locate(b)).norm();
-      if (c.in == &sph.tri) dist = 2 * std::asin((sph.locate(a) - sph.locate(b)).norm() / 2);
-      if (c.in == &torus.tri) dist = torus.torusDistance(torus.locate(a), torus.locate(b));
-      if (dist >= 0) worst = std::max(worst, std::abs(dist - r.triangulation.edgeLengths[e]));
-    }
-    CHECK(worst < 1e-10);
+    if (c.located) CHECK(c.located(r) < 1e-10);
     if (c.graded) {
+      const auto& m = r.triangulation.mesh;
+      double worstRatio = 0;
       for (int f = 0; f < m.nFaces(); ++f) {
         Eigen::Vector2d p[3];
         for (int k = 0; k < 3; ++k) p[k] = d.locate(r.locations[m.faceVertex(f, k)]);

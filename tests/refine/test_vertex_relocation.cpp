@@ -20,19 +20,6 @@ using intrinsic::IntrinsicTriangulation;
 
 namespace {
 
-// Largest violation of the signpost invariant: consecutive outgoing halfedges differ by the corner angle between them.
-double signpostDefect(const IntrinsicTriangulation& t, const Signposts& sp) {
-  double worst = 0;
-  for (int h = 0; h < t.mesh.nHalfedges(); ++h) {
-    const int g = t.mesh.nextOutgoing(h);
-    if (g == intrinsic::kInvalid) continue;
-    const double d =
-        std::remainder(sp.angle[g] - sp.angle[h] - intrinsic::cornerAngle(t, h), sp.period[t.mesh.tail(h)]);
-    worst = std::max(worst, std::abs(d));
-  }
-  return worst;
-}
-
 // The move used throughout: 40% of the way from v toward the centroid of star triangle (v mod degree). It lies in that
 // triangle; it is a valid position only when it is also in the kernel of the star polygon, so some moves are refused.
 Vec3 trialPoint(const BackgroundModel& model, const VertexStar& star) {
@@ -123,14 +110,7 @@ TEST_CASE("flat torus: relocated vertices land where the embedding puts them") {
     CHECK(worstMove < 1e-10);
     // Every edge's length equals the torus distance between the located endpoints: each moved vertex is at the
     // distances its new lengths say from all its neighbours (which fixes the point) — the embedding's answer.
-    double worst = 0;
-    const auto& m = r.triangulation.mesh;
-    for (int e = 0; e < m.nEdges(); ++e) {
-      const int h = m.edgeHalfedge(e);
-      const double d = torus.torusDistance(torus.locate(r.locations[m.tail(h)]), torus.locate(r.locations[m.tip(h)]));
-      worst = std::max(worst, std::abs(d - r.triangulation.edgeLengths[e]));
-    }
-    CHECK(worst < 1e-10);
+    CHECK(worstLocatedLengthError(torus, r.triangulation, r.locations) < 1e-10);
   }
 }
 
@@ -155,14 +135,7 @@ TEST_CASE("sphere: relocated vertices lie at the great-circle distances of their
       worstMove = std::max(worstMove, std::abs(greatCircle(before[v], s.locate(r.locations[v])) - log.distance[k]));
     }
     CHECK(worstMove < 1e-10);
-    double worst = 0;
-    const auto& m = r.triangulation.mesh;
-    for (int e = 0; e < m.nEdges(); ++e) {
-      const int h = m.edgeHalfedge(e);
-      const double d = greatCircle(s.locate(r.locations[m.tail(h)]), s.locate(r.locations[m.tip(h)]));
-      worst = std::max(worst, std::abs(d - r.triangulation.edgeLengths[e]));
-    }
-    CHECK(worst < 1e-10);
+    CHECK(worstLocatedLengthError(s, r.triangulation, r.locations) < 1e-10);
   }
 }
 
@@ -256,12 +229,6 @@ TEST_CASE("input and boundary vertices are not offered; positions outside the st
   // Disk: moves keep the located points at their edges' lengths (plane positions of the input).
   const MoveLog log = moveAll(r, input);
   CHECK(log.moved > 2 * log.refused);
-  double worst = 0;
-  for (int e = 0; e < m.nEdges(); ++e) {
-    const int h = m.edgeHalfedge(e);
-    const double d = (s.locate(r.locations[m.tail(h)]) - s.locate(r.locations[m.tip(h)])).norm();
-    worst = std::max(worst, std::abs(d - r.triangulation.edgeLengths[e]));
-  }
-  CHECK(worst < 1e-10);
+  CHECK(worstLocatedLengthError(s, r.triangulation, r.locations) < 1e-10);
   CHECK(signpostDefect(r.triangulation, r.signposts) < 1e-9);
 }
