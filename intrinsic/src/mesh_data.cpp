@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <unordered_map>
 
 #include "conformesh/intrinsic/errors.h"
@@ -16,13 +15,6 @@ namespace {
 std::uint64_t pairKey(int a, int b) {
   const auto lo = static_cast<std::uint64_t>(std::min(a, b)), hi = static_cast<std::uint64_t>(std::max(a, b));
   return (hi << 32) | lo;
-}
-
-std::string numberString(double x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << x;
-  return s.str();
 }
 
 }  // namespace
@@ -64,15 +56,17 @@ IntrinsicTriangulation toTriangulation(const MeshData& data, ConversionReport* r
     if (!std::isfinite(l) || !(l > 0))
       throw InputError(describeAt(src, "edge " + std::to_string(record) + " (" + std::to_string(data.edges[record].v0) +
                                            ", " + std::to_string(data.edges[record].v1) + ") has length " +
-                                           numberString(l) + "; lengths must be finite and positive"));
+                                           formatNumber(l) + "; lengths must be finite and positive"));
   };
 
   if (!data.edges.empty()) {
     if (!data.cornerEdges.empty()) {
       // Δ-complex: mesh edge ids are the records' indices (HalfedgeMesh groups halfedges by corner edge id).
       if (static_cast<int>(data.edges.size()) != m.nEdges())
-        throw InputError(describeAt(src, "the faces use " + std::to_string(m.nEdges()) + " edges but the edge "
-                                             "element lists " + std::to_string(data.edges.size())));
+        throw InputError(describeAt(src, "the faces use " + std::to_string(m.nEdges()) +
+                                             " edges but the edge "
+                                             "element lists " +
+                                             std::to_string(data.edges.size())));
       for (int e = 0; e < m.nEdges(); ++e) {
         const EdgeRecord& r = data.edges[e];
         const int h = m.edgeHalfedge(e);
@@ -80,7 +74,8 @@ IntrinsicTriangulation toTriangulation(const MeshData& data, ConversionReport* r
         const int b = r.v1 >= 0 && r.v1 < data.nVertices ? report.vertexMap[r.v1] : kInvalid;
         if (pairKey(a, b) != pairKey(m.tail(h), m.tip(h)) || a == kInvalid || b == kInvalid)
           throw InputError(describeAt(src, "edge " + std::to_string(e) + " is listed as (" + std::to_string(r.v0) +
-                                               ", " + std::to_string(r.v1) + ") but the faces' edge_index makes it "
+                                               ", " + std::to_string(r.v1) +
+                                               ") but the faces' edge_index makes it "
                                                "join other vertices"));
         checkLength(e, r.length);
         tri.edgeLengths[e] = r.length;
@@ -98,7 +93,8 @@ IntrinsicTriangulation toTriangulation(const MeshData& data, ConversionReport* r
         checkLength(i, r.length);
         if (!recordOf.emplace(pairKey(r.v0, r.v1), static_cast<int>(i)).second)
           throw InputError(describeAt(src, "edge " + std::to_string(i) + " (" + std::to_string(r.v0) + ", " +
-                                               std::to_string(r.v1) + ") is listed twice; a mesh with several edges "
+                                               std::to_string(r.v1) +
+                                               ") is listed twice; a mesh with several edges "
                                                "between two vertices needs the face property edge_index"));
       }
       // Edge records are in input vertex numbering; look them up with the original indices.
@@ -119,7 +115,8 @@ IntrinsicTriangulation toTriangulation(const MeshData& data, ConversionReport* r
       for (size_t i = 0; i < data.edges.size(); ++i)
         if (!recordUsed[i])
           throw InputError(describeAt(src, "edge " + std::to_string(i) + " (" + std::to_string(data.edges[i].v0) +
-                                               ", " + std::to_string(data.edges[i].v1) + ") is not a side of any face"));
+                                               ", " + std::to_string(data.edges[i].v1) +
+                                               ") is not a side of any face"));
     }
   } else {
     if (data.positions.empty())
@@ -127,9 +124,9 @@ IntrinsicTriangulation toTriangulation(const MeshData& data, ConversionReport* r
     for (int v = 0; v < data.nVertices; ++v)
       if (used[v] && !data.positions[v].allFinite())
         throw InputError(describeAt(src, "vertex " + std::to_string(v) + " has a non-finite coordinate (" +
-                                             numberString(data.positions[v].x()) + ", " +
-                                             numberString(data.positions[v].y()) + ", " +
-                                             numberString(data.positions[v].z()) + ")"));
+                                             formatNumber(data.positions[v].x()) + ", " +
+                                             formatNumber(data.positions[v].y()) + ", " +
+                                             formatNumber(data.positions[v].z()) + ")"));
     std::vector<int> original(n);
     for (int v = 0; v < data.nVertices; ++v)
       if (report.vertexMap[v] != kInvalid) original[report.vertexMap[v]] = v;

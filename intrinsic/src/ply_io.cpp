@@ -32,7 +32,6 @@ namespace conformesh::intrinsic {
 
 namespace {
 
-using detail::formatNumber;
 using detail::quoteToken;
 
 // === scalar types

@@ -41,13 +41,6 @@ inline std::string quoteToken(std::string_view token) {
   return out + "'";
 }
 
-// A number as it should read in a message (shortest round-trip form).
-inline std::string formatNumber(double x) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, r.ptr);
-}
-
 // Parses a whole token as a signed integer; false if the token is not exactly an integer in range. A leading '+' is
 // accepted because several writers emit it (std::from_chars alone rejects it).
 inline bool parseInteger(std::string_view token, long long& value) {

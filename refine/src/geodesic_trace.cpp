@@ -4,7 +4,6 @@
 #include "corner_angle.h"
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "conformesh/intrinsic/errors.h"
@@ -18,13 +17,6 @@ using intrinsic::IntrinsicTriangulation;
 using intrinsic::kInvalid;
 
 namespace {
-
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << x;
-  return s.str();
-}
 
 // Euclidean third vertex: with L = |AB|, a = |AX|, b = |BX|, X = A + x·u + y·u⊥ where x = (L² + a² − b²) / (2L) is the
 // projection on u = (B − A)/|B − A| and y = 2·area / L its height (area by Kahan's Heron: accurate for needles). The
@@ -76,9 +68,10 @@ TraceResult walk(const IntrinsicTriangulation& tri, const BackgroundModel& model
   const HalfedgeMesh& m = tri.mesh;
   // NaN coordinates would make every orientation test false (and the exact fallback meaningless): stop with the face.
   if (!s.allFinite() || !t.allFinite() || !P[0].allFinite() || !P[1].allFinite() || !P[2].allFinite())
-    throw ConvergenceError("geodesic trace from face " + std::to_string(face) + ": start (" + num(s.x()) + ", " +
-                           num(s.y()) + ", " + num(s.z()) + ") or target (" + num(t.x()) + ", " + num(t.y()) + ", " +
-                           num(t.z()) + ") or the face's layout is not finite");
+    throw ConvergenceError("geodesic trace from face " + std::to_string(face) + ": start (" + formatNumber(s.x()) +
+                           ", " + formatNumber(s.y()) + ", " + formatNumber(s.z()) + ") or target (" +
+                           formatNumber(t.x()) + ", " + formatNumber(t.y()) + ", " + formatNumber(t.z()) +
+                           ") or the face's layout is not finite");
   TraceResult r;
   r.start = s;
   r.end = t;
@@ -151,8 +144,8 @@ TraceResult traceFromVertex(const IntrinsicTriangulation& tri, const Signposts& 
   // A non-finite direction or length (a circumcentre computed from a degenerate layout) matches no wedge; it would be
   // taken below for a direction leaving the surface, so it is stopped here with the numbers that produced it.
   if (!std::isfinite(theta) || !std::isfinite(length) || !(length >= 0))
-    throw ConvergenceError("geodesic trace from vertex " + std::to_string(v) + ": direction " + num(theta) +
-                           " rad, length " + num(length) + " (not finite): degenerate triangle at the start");
+    throw ConvergenceError("geodesic trace from vertex " + std::to_string(v) + ": direction " + formatNumber(theta) +
+                           " rad, length " + formatNumber(length) + " (not finite): degenerate triangle at the start");
   Wedge w;
   if (hint != kInvalid) {
     const double off = sp.reduce(v, theta - sp.angle[hint]);
@@ -169,9 +162,10 @@ TraceResult traceFromVertex(const IntrinsicTriangulation& tri, const Signposts& 
       sum += fastCornerAngle(tri, h);
       h = m.nextOutgoing(h);
     } while (h != m.vertexHalfedge(v));
-    throw ConvergenceError("geodesic trace from interior vertex " + std::to_string(v) + ": direction " + num(theta) +
-                           " rad lies in no corner of its fan (signpost period " + num(sp.period[v]) +
-                           ", corner angles summing to " + num(sum) + "): corrupt signposts or a degenerate triangle");
+    throw ConvergenceError("geodesic trace from interior vertex " + std::to_string(v) + ": direction " +
+                           formatNumber(theta) + " rad lies in no corner of its fan (signpost period " +
+                           formatNumber(sp.period[v]) + ", corner angles summing to " + formatNumber(sum) +
+                           "): corrupt signposts or a degenerate triangle");
   }
   if (w.halfedge == kInvalid) {
     // A direction pointing out of the surface at a boundary vertex: the geodesic leaves at once through the nearer

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -87,13 +86,6 @@ Wedge findWedge(const IntrinsicTriangulation& tri, const Signposts& sp, int v, d
 
 namespace {
 
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << x;
-  return s.str();
-}
-
 // New edge lengths must be finite and positive: a zero length (a point inserted on top of a vertex) or a NaN makes
 // every later corner angle and signpost at the new vertex NaN, and a NaN direction matches no wedge of any fan. Checked
 // before the mesh is touched, so the error leaves the triangulation as it was.
@@ -101,9 +93,9 @@ void requireLengths(const char* what, int element, std::initializer_list<double>
   for (double l : lengths)
     if (!(l > 0) || !std::isfinite(l)) {
       std::string list;
-      for (double x : lengths) list += (list.empty() ? "" : ", ") + num(x);
+      for (double x : lengths) list += (list.empty() ? "" : ", ") + formatNumber(x);
       throw ConvergenceError(std::string("refine: ") + what + " " + std::to_string(element) +
-                             " would get a new edge of length " + num(l) + " (new lengths " + list +
+                             " would get a new edge of length " + formatNumber(l) + " (new lengths " + list +
                              "): the inserted point coincides with a vertex or was computed from a degenerate layout");
     }
 }
@@ -117,9 +109,9 @@ void requireFiniteSignposts(const IntrinsicTriangulation& tri, const Signposts& 
     for (int h = 3 * f; h < 3 * f + 3; ++h)
       if (!std::isfinite(sp.angle[h]))
         throw ConvergenceError("refine: inserting vertex " + std::to_string(p) + " gave halfedge " + std::to_string(h) +
-                               " a non-finite direction (its triangle has edge lengths " + num(tri.length(h)) + ", " +
-                               num(tri.length(HalfedgeMesh::next(h))) + ", " + num(tri.length(HalfedgeMesh::prev(h))) +
-                               "): degenerate triangle");
+                               " a non-finite direction (its triangle has edge lengths " + formatNumber(tri.length(h)) +
+                               ", " + formatNumber(tri.length(HalfedgeMesh::next(h))) + ", " +
+                               formatNumber(tri.length(HalfedgeMesh::prev(h))) + "): degenerate triangle");
 }
 
 }  // namespace
@@ -178,7 +170,7 @@ int splitFaceWithSignposts(IntrinsicTriangulation& tri, Signposts& sp, int f, co
   requireLengths("splitting face", f, {toCorner[0], toCorner[1], toCorner[2]});
   if (!std::isfinite(angleToCorner0))
     throw ConvergenceError("refine: splitting face " + std::to_string(f) +
-                           ": the new vertex's direction to corner 0 is " + num(angleToCorner0));
+                           ": the new vertex's direction to corner 0 is " + formatNumber(angleToCorner0));
   HalfedgeMesh& m = tri.mesh;
   const double sBc = sp.angle[3 * f + 1], sCa = sp.angle[3 * f + 2];
   const int p = m.splitFace(f);
@@ -213,7 +205,7 @@ int splitEdgeWithSignposts(IntrinsicTriangulation& tri, Signposts& sp, int e, do
     requireLengths("splitting edge", e, {ap, pb, pc, pd});
   if (!std::isfinite(angleToB) || !std::isfinite(turnAtA))
     throw ConvergenceError("refine: splitting edge " + std::to_string(e) + ": the new vertex's directions are " +
-                           num(angleToB) + ", " + num(turnAtA));
+                           formatNumber(angleToB) + ", " + formatNumber(turnAtA));
   const int na = HalfedgeMesh::next(ha), pa = HalfedgeMesh::prev(ha);
   const double sNa = sp.angle[na];
   const double sNb = hb == kInvalid ? 0.0 : sp.angle[HalfedgeMesh::next(hb)];

@@ -5,6 +5,7 @@
 // prints the message on one line and exits non-zero; library users catch them by type.
 #pragma once
 
+#include <charconv>
 #include <stdexcept>
 #include <string>
 
@@ -25,6 +26,14 @@ class ConvergenceError : public std::runtime_error {
 // Formats "where: what" with an optional source name, e.g. "mesh.obj:12: face 7 repeats vertex 3".
 inline std::string describeAt(const std::string& source, const std::string& what) {
   return source.empty() ? what : source + ": " + what;
+}
+
+// A number as it should read in a message: the shortest form that reads back to the same double, so that a length or
+// residual quoted in an error can be compared bit for bit with the file it came from.
+inline std::string formatNumber(double x) {
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
 }
 
 }  // namespace conformesh
