@@ -92,8 +92,10 @@ class Refiner {
   std::vector<int> encroachedByPoint(const TraceResult& trace) const;
   std::optional<Vec3> frontalPoint(int f, const std::array<Vec3, 3>& P, const Vec3& c) const;
   void countInsertion();
-  // === the loop
+  // === the loop. drain() serves the queues until they are empty; drainAll() first Lawson-flips every edge and queues
+  // every face and boundary segment (the start, and the restart after a smoothing pass).
   void drain();
+  void drainAll();
   void smoothAndRefine();
 
   const IntrinsicTriangulation& in_;
@@ -781,7 +783,12 @@ RefineResult Refiner::run() {
   minSize_ = opt_.minCircumradius > 0 ? opt_.minCircumradius
                                       : 1e-6 * std::min(opt_.epsilon * std::exp(-lambdaMax_), shortestInput);
   setupBoundary();
+  drainAll();
+  smoothAndRefine();
+  return std::move(res_);
+}
 
+void Refiner::drainAll() {
   std::vector<int> all(tri_.mesh.nEdges());
   for (int e = 0; e < tri_.mesh.nEdges(); ++e) all[e] = e;
   restoreDelaunay(all);
@@ -789,8 +796,6 @@ RefineResult Refiner::run() {
   for (int e = 0; e < tri_.mesh.nEdges(); ++e)
     if (tri_.mesh.isBoundaryEdge(e)) segmentQueue_.push_back(e);
   drain();
-  smoothAndRefine();
-  return std::move(res_);
 }
 
 void Refiner::smoothAndRefine() {
@@ -809,13 +814,7 @@ void Refiner::smoothAndRefine() {
     // The moves keep every star valid but not necessarily Delaunay: Lawson's flips over all edges, then the refinement
     // loop over every face and segment, so the output meets the bounds exactly as an unsmoothed one does (the loop
     // stops only when no triangle is bad; termination: the packing argument of §1 with the smoothed mesh as input).
-    std::vector<int> all(tri_.mesh.nEdges());
-    for (int e = 0; e < tri_.mesh.nEdges(); ++e) all[e] = e;
-    restoreDelaunay(all);
-    for (int f = 0; f < tri_.mesh.nFaces(); ++f) pushFace(f);
-    for (int e = 0; e < tri_.mesh.nEdges(); ++e)
-      if (tri_.mesh.isBoundaryEdge(e)) segmentQueue_.push_back(e);
-    drain();
+    drainAll();
   }
   res_.statistics.insertionsAfterSmoothing = insertions_ - before;
 }
