@@ -40,7 +40,7 @@ struct RemeshArgs {
 void run(const RemeshArgs& a) {
   if (isMeshFilePath(a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh.h)
     return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
-                          a.refineIn, a.smoothing});
+                          a.refineIn, a.smoothing, a.smoothingRule});
   if (a.refineIn != "uniformized")
     throw InputError("remesh: --refine-in " + a.refineIn +
                      " applies to mesh files; a smooth metric is refined uniformized");
@@ -153,7 +153,7 @@ void registerRemeshCommand(CLI::App& app) {
                   "their triangles' smallest angles (input locations re-traced), then refinement re-runs so every "
                   "bound still holds; raises the mean smallest angle (`convergence` uses 1), at ~3.5x the refinement "
                   "time. 0 = the paper's unsmoothed refinement. Metric families, fields and mesh files with "
-                  "--refine-in input (a mesh refined uniformized is refined unsmoothed)")
+                  "--refine-in input (a mesh refined uniformized is refined unsmoothed; --smoothing is then an error)")
       ->capture_default_str();
   sub->add_option("--smoothing-rule", a->smoothingRule,
                   "Start of each vertex's search: odt (optimal Delaunay point, default) or centroid")

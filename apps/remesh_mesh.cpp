@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "cli_common.h"
+#include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh_io.h"
 #include "conformesh/intrinsic/vtk_writer.h"
 #include "conformesh/refine/mesh_remesh.h"
@@ -34,7 +35,12 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
   const bool inInput = o.refineIn == refine::RefineMetric::Input;
   // Smoothing acts in the metric the refinement runs in: on the uniformized route it would improve T1*, not the
   // angles in the input's metric, so that route stays the paper's unsmoothed refinement.
-  if (inInput) o.refinement.smoothingPasses = a.smoothing;
+  if (!inInput && a.smoothing != 0)
+    throw InputError(
+        "remesh: --smoothing applies to a mesh file with --refine-in input; refined uniformized, a mesh "
+        "is refined unsmoothed (smoothing would act in the uniformized metric, not the input's)");
+  o.refinement.smoothingPasses = a.smoothing;
+  o.refinement.smoothingRule = refine::parseSmoothingRule(a.smoothingRule);
   o.progress = [](const std::string& s) { progress(s); };
   const refine::MeshRemeshResult r = refine::remeshMesh(in.triangulation, in.positions, o);
   intrinsic::MeshData data = refine::toMeshData(r, in.source, a.epsilon);

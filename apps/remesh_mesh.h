@@ -20,6 +20,7 @@ struct MeshRemeshCliArgs {
   bool json = false, noCheck = false, ascii = false;
   std::string refineIn = "uniformized";  // refine::parseRefineMetric
   int smoothing = 0;                     // smoothing passes, input route only (the uniformized route is unsmoothed)
+  std::string smoothingRule = "odt";     // refine::parseSmoothingRule
 };
 
 void runRemeshMesh(const MeshRemeshCliArgs& args);

@@ -124,6 +124,9 @@ TEST_CASE("remesh MESHFILE errors: one line naming the file and the element") {
   r = runCli("remesh " + kEight + " --eps 0.05 --refine-in flat -o " + (dir() / "x.ply").string());
   CHECK(r.status != 0);
   CHECK(r.err.find("--refine-in") != std::string::npos);
+  r = runCli("remesh " + kEight + " --eps 0.05 --smoothing 1 -o " + (dir() / "x.ply").string());
+  CHECK(r.status == 1);
+  CHECK(r.err.find("--refine-in input") != std::string::npos);
   r = runCli("remesh sphere --eps 0.05 --refine-in input -o " + (dir() / "x.ply").string());
   CHECK(r.status == 1);
   CHECK(r.err.find("mesh files") != std::string::npos);

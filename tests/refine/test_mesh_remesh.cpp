@@ -252,6 +252,25 @@ TEST_CASE("mesh remesh in the input metric: Ruppert's bound with the output's ow
   }
 }
 
+TEST_CASE("mesh remesh in the input metric: planar disk, every length is the distance of its ends' located positions") {
+  // The input is a plane with a polygonal boundary: every geodesic is a straight segment, so each output length must
+  // be the Euclidean distance of its two ends' positions interpolated at their input locations — every edge, not only
+  // those within one face. Boundary edges are split where they lie, so every vertex stays on the input.
+  const MeshInput in = meshInputFromData(jitteredDisk());
+  MeshRemeshOptions o;
+  o.epsilon = 0.05;
+  o.refineIn = RefineMetric::Input;
+  const MeshRemeshResult r = remeshMesh(in.triangulation, in.positions, o);
+  REQUIRE(r.refinement.boundarySplits > 0);
+  CHECK(relativeLengthMismatch(r) < 1e-12);
+  for (const auto& p : r.positions) CHECK(p.z() == 0);
+  CHECK(r.quality.minAngleDeg >= 20.7);
+  CHECK(r.quality.maxCircumradius <= o.epsilon * (1 + 1e-12));
+  CHECK(totalArea(r.mesh) == Approx(totalArea(in.triangulation)).epsilon(1e-13));
+  CHECK(std::abs(r.quality.gaussBonnetResidual) < 1e-9);
+  CHECK(r.invertedTriangles == 0);
+}
+
 TEST_CASE("mesh remesh in the input metric: one smoothing pass keeps every bound and raises the mean smallest angle") {
   const MeshInput in = cgalMesh("eight.off");
   MeshRemeshOptions o;
