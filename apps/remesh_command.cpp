@@ -7,6 +7,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/mesh_io.h"
 #include "conformesh/intrinsic/metric_families.h"
@@ -33,11 +34,16 @@ struct RemeshArgs {
   std::string region = "ball";
   int smoothing = refine::RemeshOptions{}.refinement.smoothingPasses;
   std::string smoothingRule = "odt";
+  std::string refineIn = "uniformized";
 };
 
 void run(const RemeshArgs& a) {
-  if (isMeshFilePath(a.family))  // a mesh file: pull back through its faces (remesh_mesh.h)
-    return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii});
+  if (isMeshFilePath(a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh.h)
+    return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
+                          a.refineIn, a.smoothing, a.smoothingRule});
+  if (a.refineIn != "uniformized")
+    throw InputError("remesh: --refine-in " + a.refineIn +
+                     " applies to mesh files; a smooth metric is refined uniformized");
   const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetric("remesh", a.family, a.params, a.field);
   refine::RemeshOptions o;
   o.epsilon = a.epsilon;
@@ -119,7 +125,8 @@ void registerRemeshCommand(CLI::App& app) {
       "Families and their parameters: conformesh discretize --list.\n"
       "A mesh file (.off/.obj/.ply) as INPUT: uniformize it, refine, pull back through its faces; output lengths\n"
       "are the developed lengths of the edges' image paths on the input, and the check compares the output's\n"
-      "deficits with the input's own over the same balls (docs/cli.md, remesh).\n"
+      "deficits with the input's own over the same balls (docs/cli.md, remesh). With --refine-in input the input\n"
+      "itself is refined in its own metric (no Ricci flow), and the angle bound holds in that metric.\n"
       "Example: conformesh remesh kerr-newman --param a=0.99 --eps 0.05 -o kerr.ply --vtk kerr.vtk");
   sub->add_option("family", a->family,
                   "Metric family (see `conformesh discretize --list`), or a mesh file (.off/.obj/.ply)");
@@ -145,12 +152,18 @@ void registerRemeshCommand(CLI::App& app) {
                   "Smoothing passes after refinement: inserted interior vertices move within their stars to raise "
                   "their triangles' smallest angles (input locations re-traced), then refinement re-runs so every "
                   "bound still holds; raises the mean smallest angle (`convergence` uses 1), at ~3.5x the refinement "
-                  "time. 0 = the paper's unsmoothed refinement. Metric families and fields only (a mesh input is "
-                  "refined unsmoothed)")
+                  "time. 0 = the paper's unsmoothed refinement. Metric families, fields and mesh files with "
+                  "--refine-in input (a mesh refined uniformized is refined unsmoothed; --smoothing is then an error)")
       ->capture_default_str();
   sub->add_option("--smoothing-rule", a->smoothingRule,
                   "Start of each vertex's search: odt (optimal Delaunay point, default) or centroid")
       ->check(CLI::IsMember({"odt", "centroid"}));
+  sub->add_option("--refine-in", a->refineIn,
+                  "Mesh files: the metric the Delaunay refinement runs in. 'uniformized' (default, the paper's): the "
+                  "Ricci-flow uniformization, graded by exp(-lambda), pulled back through the input faces; 'input': "
+                  "the input's own flat cone metric, size bound eps uniform on the input, so the angle bound holds in "
+                  "the input's metric")
+      ->check(CLI::IsMember({"uniformized", "input"}));
   sub->add_flag("--ascii", a->ascii, "Write ASCII PLY instead of binary");
   sub->callback([a] { run(*a); });
 }

@@ -1,6 +1,7 @@
-// remesh_mesh.cpp — `conformesh remesh MESHFILE --eps E -o OUT.ply`: uniformize the input mesh, refine, pull back
-// through its faces (refine/mesh_remesh.h); print the quality in the input's metric and the curvature-measure check
-// against the input's own angle deficits (meshCurvatureMeasure). Parsing and printing only.
+// remesh_mesh.cpp — `conformesh remesh MESHFILE --eps E [--refine-in uniformized|input] -o OUT.ply`: uniformize the
+// input mesh, refine, pull back through its faces, or refine the input in its own metric (refine/mesh_remesh.h); print
+// the quality in the input's metric and the curvature-measure check against the input's own angle deficits
+// (meshCurvatureMeasure). Parsing and printing only.
 #include "remesh_mesh.h"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <cstdio>
 
 #include "cli_common.h"
+#include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh_io.h"
 #include "conformesh/intrinsic/vtk_writer.h"
 #include "conformesh/refine/mesh_remesh.h"
@@ -29,6 +31,16 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
   o.epsilon = a.epsilon;
   o.ratioBound = a.ratio;
   o.uniform = a.uniform;
+  o.refineIn = refine::parseRefineMetric(a.refineIn);
+  const bool inInput = o.refineIn == refine::RefineMetric::Input;
+  // Smoothing acts in the metric the refinement runs in: on the uniformized route it would improve T1*, not the
+  // angles in the input's metric, so that route stays the paper's unsmoothed refinement.
+  if (!inInput && a.smoothing != 0)
+    throw InputError(
+        "remesh: --smoothing applies to a mesh file with --refine-in input; refined uniformized, a mesh "
+        "is refined unsmoothed (smoothing would act in the uniformized metric, not the input's)");
+  o.refinement.smoothingPasses = a.smoothing;
+  o.refinement.smoothingRule = refine::parseSmoothingRule(a.smoothingRule);
   o.progress = [](const std::string& s) { progress(s); };
   const refine::MeshRemeshResult r = refine::remeshMesh(in.triangulation, in.positions, o);
   intrinsic::MeshData data = refine::toMeshData(r, in.source, a.epsilon);
@@ -37,20 +49,27 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
       {"input", in.source},
       {"eps", a.epsilon},
       {"ratio_bound", a.ratio},
+      {"refine_in", refine::toString(r.refinedIn)},
+      {"smoothing_passes", o.refinement.smoothingPasses},
       {"input_mesh",
        {{"vertices", r.inputVertices}, {"faces", r.inputFaces}, {"area", intrinsic::totalArea(in.triangulation)}}},
-      {"uniformization", uniformizationJson(r.uniformization)},
       {"refinement", refineStatisticsJson(r.refinement)},
-      {"quality_uniformized", qualityJson(r.uniformQuality)},
       {"quality", qualityJson(r.quality)},
       {"inverted_triangles", r.invertedTriangles},
       {"orientation_checked_triangles", r.orientationChecked},
-      {"path_pieces", r.pathPieces},
-      {"input_edge_crossings", r.inputEdgeCrossings},
+      {"same_face_edges", r.sameFaceEdges},
+      {"max_same_face_length_error", r.maxSameFaceLengthError},
+      {"loop_edges", r.loopEdges},
       {"total_area", intrinsic::totalArea(r.mesh)},
       {"seconds",
        {{"uniformize", r.seconds.uniformize}, {"refine", r.seconds.refine}, {"pull_back", r.seconds.pullBack}}}};
-  j["max_path_excess"] = r.maxBendExcess;  // (sum of straight pieces) / (developed length) − 1, over edges
+  if (!inInput) {  // the uniformized surface and the image paths exist on the paper's route only
+    j["uniformization"] = uniformizationJson(r.uniformization);
+    j["quality_uniformized"] = qualityJson(r.uniformQuality);
+    j["path_pieces"] = r.pathPieces;
+    j["input_edge_crossings"] = r.inputEdgeCrossings;
+    j["max_path_excess"] = r.maxBendExcess;  // (sum of straight pieces) / (developed length) − 1, over edges
+  }
   if (!a.noCheck) {
     progress("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
     const intrinsic::CurvatureMeasureOptions co;
@@ -66,14 +85,19 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
   }
   const auto& q = r.quality;
   std::printf("%s (mesh: %d vertices, %d faces; %s)\n", in.source.c_str(), r.inputVertices, r.inputFaces,
-              intrinsic::toString(r.uniformization.target).c_str());
+              inInput ? "refined in the input metric"
+                      : ("refined uniformized, " + intrinsic::toString(r.uniformization.target)).c_str());
   std::printf("  %-34s %d vertices, %d triangles\n", "output", q.vertices, q.triangles);
   std::printf("  %-34s %.3f deg (mean per triangle %.3f deg)\n", "smallest angle, input metric", q.minAngleDeg,
               q.meanMinAngleDeg);
   std::printf("  %-34s max %.6g, mean %.6g (eps %.6g)\n", "circumradius, input metric", q.maxCircumradius,
               q.meanCircumradius, a.epsilon);
-  std::printf("  %-34s %d of %d checked\n", "inverted triangles in the map back", r.invertedTriangles,
+  std::printf("  %-34s %d of %d checked\n", "inverted triangles on the input", r.invertedTriangles,
               r.orientationChecked);
+  std::printf("  %-34s max relative difference %.2e over %d edges\n", "length vs located ends (one face)",
+              r.maxSameFaceLengthError, r.sameFaceEdges);
+  if (r.loopEdges > 0)
+    std::printf("  %-34s %d (geodesic loops around cone vertices below 180 deg)\n", "loop edges", r.loopEdges);
   std::printf("  %-34s %.3e\n", "Gauss-Bonnet residual", q.gaussBonnetResidual);
   std::printf("  %-34s %.10g (input %.10g)\n", "total area", intrinsic::totalArea(r.mesh),
               intrinsic::totalArea(in.triangulation));

@@ -1,8 +1,9 @@
 // mesh_remesh.cpp — uniformize → refine → pull back through the input faces, for a surface given by a triangle mesh
-// (mesh_remesh.h). The pull-back traces each output edge across T0*, maps the pieces' ends to T0 through the flow's
-// correspondence, follows each piece's image path across T0's faces (straight inside every input face, its crossings
-// of input edges found exactly in the decorated-ideal (light-cone) model of flow_correspondence.h), and develops the
-// path into the plane: the distance of its developed ends is the output length.
+// (mesh_remesh.h), or the refinement of the input in its own metric. The pull-back traces each output edge across T0*,
+// maps the pieces' ends to T0 through the flow's correspondence, follows each piece's image path across T0's faces
+// (straight inside every input face, its crossings of input edges found exactly in the decorated-ideal (light-cone)
+// model of flow_correspondence.h), and develops the path into the plane: the distance of its developed ends is the
+// output length.
 #include "conformesh/refine/mesh_remesh.h"
 
 #include "corner_angle.h"
@@ -438,7 +439,132 @@ Subdivision subdivide(const IntrinsicTriangulation& t) {
   return out;
 }
 
+// Affine interpolation of the input's positions at each output vertex's location (empty without positions).
+std::vector<Eigen::Vector3d> interpolatePositions(const IntrinsicTriangulation& input,
+                                                  const std::vector<Eigen::Vector3d>& inputPositions,
+                                                  const std::vector<FacePoint>& location) {
+  std::vector<Eigen::Vector3d> out;
+  if (inputPositions.empty()) return out;
+  out.reserve(location.size());
+  for (const FacePoint& p : location) {
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) x += p.bary[k] * inputPositions[input.mesh.faceVertex(p.face, k)];
+    out.push_back(x);
+  }
+  return out;
+}
+
+// Orientation of the output triangles on T0 where the three vertices can be written in one input face (directly, or
+// a vertex or a point on a side re-expressed in a neighbouring face), and the same-face length check: an edge whose
+// ends can be written in one face is compared with the straight distance of the ends there. A loop edge (both ends one
+// vertex: a geodesic loop around a cone vertex of angle below π, which an intrinsic Delaunay triangulation may hold)
+// and its triangles have no such picture in one face; they are counted, not checked.
+void checkAgainstLocations(const IntrinsicTriangulation& t0, const IntrinsicTriangulation& t1,
+                           const std::vector<Point>& vertexImage, MeshRemeshResult& out) {
+  const HalfedgeMesh &m0 = t0.mesh, &m1 = t1.mesh;
+  for (int f = 0; f < m1.nFaces(); ++f) {
+    const int v0 = m1.faceVertex(f, 0), v1 = m1.faceVertex(f, 1), v2 = m1.faceVertex(f, 2);
+    if (v0 == v1 || v1 == v2 || v2 == v0) continue;
+    const Point* p[3] = {&vertexImage[v0], &vertexImage[v1], &vertexImage[v2]};
+    for (int k = 0; k < 3; ++k) {
+      const int face = p[k]->face;
+      Eigen::Vector3d b[3];
+      if (!expressIn(m0, *p[0], face, b[0]) || !expressIn(m0, *p[1], face, b[1]) || !expressIn(m0, *p[2], face, b[2]))
+        continue;
+      Eigen::Matrix3d B;
+      B << b[0], b[1], b[2];
+      ++out.orientationChecked;
+      if (!(B.determinant() > 0)) ++out.invertedTriangles;
+      break;
+    }
+  }
+  for (int e = 0; e < m1.nEdges(); ++e) {
+    const int h = m1.edgeHalfedge(e);
+    if (m1.tail(h) == m1.tip(h)) {
+      ++out.loopEdges;
+      continue;
+    }
+    const Point &a = vertexImage[m1.tail(h)], &b = vertexImage[m1.tip(h)];
+    Eigen::Vector3d x;
+    double d;
+    if (expressIn(m0, a, b.face, x))
+      d = flatDistance(t0, b.face, x, b.bary);
+    else if (expressIn(m0, b, a.face, x))
+      d = flatDistance(t0, a.face, a.bary, x);
+    else
+      continue;
+    ++out.sameFaceEdges;
+    out.maxSameFaceLengthError =
+        std::max(out.maxSameFaceLengthError, std::abs(t1.edgeLengths[e] - d) / t1.edgeLengths[e]);
+  }
+}
+
+// The input route (mesh_remesh.h, top): Delaunay refinement of the input in its own metric. The refiner flips the
+// input to its intrinsic Delaunay triangulation first and records every inserted vertex on the input's own faces, so
+// the output needs no map: its lengths are the refinement's, its locations the refinement's.
+MeshRemeshResult remeshInInputMetric(const IntrinsicTriangulation& input,
+                                     const std::vector<Eigen::Vector3d>& inputPositions,
+                                     const MeshRemeshOptions& options) {
+  auto say = [&](const std::string& s) {
+    if (options.progress) options.progress(s);
+  };
+  MeshRemeshResult out;
+  out.refinedIn = RefineMetric::Input;
+  out.inputVertices = out.t0Vertices = input.mesh.nVertices();
+  out.inputFaces = input.mesh.nFaces();
+
+  auto t = std::chrono::steady_clock::now();
+  RefineOptions ref = options.refinement;
+  ref.epsilon = options.epsilon;
+  ref.ratioBound = options.ratioBound;
+  ref.lambda.clear();
+  // The input's boundary is a polygon of straight input edges: split it where it lies, never on a fitted circle
+  // (which would put vertices off the input's faces).
+  ref.boundarySplit = BoundarySplit::Geodesic;
+  if (!ref.progress && options.progress)
+    ref.progress = [&](const RefineProgress& p) {
+      say("refining: " + std::to_string(p.vertices) + " vertices, " + std::to_string(p.queuedTriangles) +
+          " bad triangles queued");
+    };
+  say("refining the input in its own metric, eps = " + std::to_string(options.epsilon));
+  RefineResult refined = refineDelaunay(input, ref);
+  out.refinement = refined.statistics;
+  out.seconds.refine = secondsSince(t);
+
+  t = std::chrono::steady_clock::now();
+  const HalfedgeMesh& m0 = input.mesh;
+  const int n0 = m0.nVertices(), n1 = refined.triangulation.mesh.nVertices();
+  out.lambda = refined.lambda;  // λ ≡ 0: the refinement's metric is the input's
+  out.location.resize(n1);
+  std::vector<Point> vertexImage(n1);
+  for (int v = 0; v < n1; ++v) {
+    // Round-off may leave a coordinate of an inserted vertex at −1e-17; the output claims a point of its face.
+    vertexImage[v] =
+        v < n0 ? vertexPoint(m0, v) : Point{refined.locations[v].face, clampToFace(refined.locations[v].bary)};
+    const Eigen::Vector3d& b = vertexImage[v].bary;
+    out.location[v] = {vertexImage[v].face, {b[0], b[1], b[2]}};
+  }
+  out.positions = interpolatePositions(input, inputPositions, out.location);
+  out.mesh = std::move(refined.triangulation);
+  out.pathLength = out.mesh.edgeLengths;  // each edge is a geodesic of the input: its own path
+  checkAgainstLocations(input, out.mesh, vertexImage, out);
+  out.quality = measureQuality(out.mesh);
+  out.uniformQuality = out.quality;
+  out.seconds.pullBack = secondsSince(t);
+  return out;
+}
+
 }  // namespace
+
+std::string toString(RefineMetric metric) {
+  return metric == RefineMetric::Input ? "input" : "uniformized";
+}
+
+RefineMetric parseRefineMetric(const std::string& name) {
+  for (RefineMetric m : {RefineMetric::Uniformized, RefineMetric::Input})
+    if (toString(m) == name) return m;
+  throw InputError("refine metric '" + name + "' is not one of uniformized, input");
+}
 
 // === pipeline
 
@@ -472,6 +598,22 @@ MeshRemeshResult remeshMesh(const IntrinsicTriangulation& input, const std::vect
   if (!inputPositions.empty() && inputPositions.size() != static_cast<std::size_t>(input.mesh.nVertices()))
     throw InputError("remesh: " + std::to_string(inputPositions.size()) + " positions for " +
                      std::to_string(input.mesh.nVertices()) + " input vertices");
+  if (options.refineIn == RefineMetric::Input) {
+    if (options.inputSubdivisions != 0)
+      throw InputError(
+          "remesh: input subdivisions apply when refining in the uniformized metric, not in the input's "
+          "(found " +
+          std::to_string(options.inputSubdivisions) + ")");
+    if (options.uniform)
+      throw InputError(
+          "remesh: --uniform (lambda = 0 in the uniformized domain) does not apply when refining in the "
+          "input metric, where the size bound is uniform on the input already");
+    if (options.refinement.boundarySplit == BoundarySplit::Circle)
+      throw InputError(
+          "remesh: boundary splits on circles need the uniformized metric; the input's boundary is "
+          "split at edge midpoints");
+    return remeshInInputMetric(input, inputPositions, options);
+  }
   // T0: the input, midpoint-subdivided `inputSubdivisions` times (the same flat surface), with each face's place in
   // the input (face + affine map of its corners).
   IntrinsicTriangulation t0 = input;
@@ -560,14 +702,7 @@ MeshRemeshResult remeshMesh(const IntrinsicTriangulation& input, const std::vect
       out.location[v] = {parentFace[p.face], {b[0], b[1], b[2]}};
     }
   }
-  if (!inputPositions.empty()) {
-    out.positions.resize(n1);
-    for (int v = 0; v < n1; ++v) {
-      const FacePoint& p = out.location[v];
-      out.positions[v] = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k) out.positions[v] += p.bary[k] * inputPositions[input.mesh.faceVertex(p.face, k)];
-    }
-  }
+  out.positions = interpolatePositions(input, inputPositions, out.location);
 
   // Edges: trace each across T0*, one piece per T0* face.
   const Signposts inputSignposts = initialSignposts(star);
@@ -689,23 +824,8 @@ MeshRemeshResult remeshMesh(const IntrinsicTriangulation& input, const std::vect
   out.mesh.edgeLengths = lengths;
   validateLengths(out.mesh, "remeshed surface (developed image-path lengths)");
 
-  // Orientation of the map back, where the three images can be written in one input face (directly, or a vertex or a
-  // point on a side re-expressed in a neighbouring face).
-  for (int f = 0; f < m1.nFaces(); ++f) {
-    const Point* p[3] = {&vertexImage[m1.faceVertex(f, 0)], &vertexImage[m1.faceVertex(f, 1)],
-                         &vertexImage[m1.faceVertex(f, 2)]};
-    for (int k = 0; k < 3; ++k) {
-      const int face = p[k]->face;
-      Eigen::Vector3d b[3];
-      if (!expressIn(m0, *p[0], face, b[0]) || !expressIn(m0, *p[1], face, b[1]) || !expressIn(m0, *p[2], face, b[2]))
-        continue;
-      Eigen::Matrix3d B;
-      B << b[0], b[1], b[2];
-      ++out.orientationChecked;
-      if (!(B.determinant() > 0)) ++out.invertedTriangles;
-      break;
-    }
-  }
+  // Orientation of the map back, and the edges within one input face (on T0: with subdivisions, its faces).
+  checkAgainstLocations(t0, out.mesh, vertexImage, out);
   out.quality = measureQuality(out.mesh);
   out.seconds.pullBack = secondsSince(t);
   return out;
@@ -799,7 +919,9 @@ MeshData toMeshData(const MeshRemeshResult& r, const std::string& source, double
   std::snprintf(eps, sizeof eps, "%.17g", epsilon);
   d.comments.push_back("conformesh remesh: mesh " + source);
   d.comments.push_back("eps " + std::string(eps) + " (circumradius bound in the input mesh's metric)");
-  d.comments.push_back("lengths: lengths of the edges' image paths across the input faces");
+  d.comments.push_back(r.refinedIn == RefineMetric::Input
+                           ? "lengths: refined in the input's own metric; the refined triangulation's lengths"
+                           : "lengths: lengths of the edges' image paths across the input faces");
   d.comments.push_back("input: " + std::to_string(r.inputVertices) + " vertices, " + std::to_string(r.inputFaces) +
                        " faces (input_face, input_b0..2)");
   return d;

@@ -2,9 +2,11 @@
 // torus (its own uniformization up to scale: no flip, constant λ) where every output length is e^λ times its
 // uniformized length; a planar disk, where the developed image paths are planar segments, so every output length is
 // the Euclidean distance of its ends' mapped positions. Then a real genus-2 mesh (CGAL's eight.off) end to end, the
-// curvature-measure check's exact limit, and bad input naming what is wrong.
+// curvature-measure check's exact limit, the refinement in the input's own metric on eight.off and cow.off (Ruppert's
+// bound with the output's own lengths over an ε sweep), and bad input naming what is wrong.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -12,6 +14,7 @@
 
 #include "conformesh/intrinsic/curvature.h"
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/intrinsic_flips.h"
 #include "conformesh/intrinsic/mesh_generators.h"
 #include "conformesh/intrinsic/mesh_io.h"
 #include "conformesh/refine/mesh_remesh.h"
@@ -41,6 +44,27 @@ MeshData jitteredDisk() {
     if (p.norm() < 0.99) p += Eigen::Vector3d(jitter(rng), jitter(rng), 0);
   m.source = "jittered disk";
   return m;
+}
+
+MeshInput cgalMesh(const std::string& name) {
+  return meshInputFromData(readMesh(std::string(CONFORMESH_TEST_DATA_DIR) + "/" + name));
+}
+
+// A flat triangle's corner angles (opposite its sides a, b, c, law of cosines) and circumradius abc / 4A (Heron, in
+// Kahan's stable ordering), from its three lengths only: independent of the library's triangle geometry.
+struct FlatTriangle {
+  std::array<double, 3> angleDeg;
+  double circumradius;
+};
+FlatTriangle flatTriangle(double a, double b, double c) {
+  auto angle = [](double x, double y, double opposite) {
+    return std::acos(std::clamp((x * x + y * y - opposite * opposite) / (2 * x * y), -1.0, 1.0)) * 180 / M_PI;
+  };
+  std::array<double, 3> s = {a, b, c};
+  std::sort(s.begin(), s.end(), std::greater<>());
+  const double x = s[0], y = s[1], z = s[2];
+  const double area = 0.25 * std::sqrt((x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z)));
+  return {{angle(b, c, a), angle(c, a, b), angle(a, b, c)}, a * b * c / (4 * area)};
 }
 
 double relativeLengthMismatch(const MeshRemeshResult& r) {
@@ -156,6 +180,115 @@ TEST_CASE("mesh remesh: CGAL's genus-2 eight.off end to end") {
   }
 }
 
+TEST_CASE("mesh remesh in the input metric: Ruppert's bound with the output's own lengths, on real CGAL meshes") {
+  // The refinement runs in the input's flat cone metric (no map, no distortion): every output triangle meets the size
+  // bound ε and the shape bound B = √2, so every angle measured with the output's lengths is at least
+  // arcsin(1 / (2√2)) = 20.70°, at every ε, including next to the cone vertices (eight.off's vertex angle sums are
+  // 344°…382°, cow.off's 101°…541°, all above 3 × 20.7°, so no vertex forces a small corner).
+  const double ruppert = std::asin(1 / (2 * std::sqrt(2.0))) * 180 / M_PI;
+  REQUIRE(ruppert > 20.7);
+  struct Case {
+    std::string name;
+    int chi;
+    std::vector<double> epsilons;
+  };
+  for (const Case& k :
+       {Case{"eight.off", -2, {0.05, 0.03, 0.02, 0.01, 0.007}}, Case{"cow.off", 2, {0.03, 0.01, 0.007}}}) {
+    const MeshInput in = cgalMesh(k.name);
+    REQUIRE(in.triangulation.mesh.eulerCharacteristic() == k.chi);
+    const int n0 = in.triangulation.mesh.nVertices();
+    const std::vector<double> k0 = vertexCurvatures(in.triangulation);
+    // The smallest vertex angle sum 2π − (largest deficit) exceeds 3 × 20.7°: no cone vertex forces a corner below it.
+    CHECK((2 * M_PI - *std::max_element(k0.begin(), k0.end())) * 180 / M_PI > 3 * 20.7);
+    const double inputArea = totalArea(in.triangulation);
+    for (double eps : k.epsilons) {
+      INFO(k.name << " at eps " << eps);
+      MeshRemeshOptions o;
+      o.epsilon = eps;
+      o.refineIn = RefineMetric::Input;
+      const MeshRemeshResult r = remeshMesh(in.triangulation, in.positions, o);
+      const HalfedgeMesh& m = r.mesh.mesh;
+      REQUIRE(r.refinedIn == RefineMetric::Input);
+      REQUIRE(m.nVertices() > n0);
+      // Angles and circumradii from the written lengths.
+      double smallest = 180, largestR = 0;
+      for (int f = 0; f < m.nFaces(); ++f) {
+        const FlatTriangle t = flatTriangle(r.mesh.length(3 * f), r.mesh.length(3 * f + 1), r.mesh.length(3 * f + 2));
+        for (double a : t.angleDeg) smallest = std::min(smallest, a);
+        largestR = std::max(largestR, t.circumradius);
+      }
+      CHECK(smallest >= 20.7);
+      CHECK(largestR <= eps * (1 + 1e-12));
+      CHECK(countNonDelaunayEdges(r.mesh) == 0);
+      // The same cone metric retriangulated: the input vertices keep their deficits, inserted vertices are flat, the
+      // area is the input's.
+      CHECK(std::abs(curvatureTotals(r.mesh).gaussBonnetResidual) < 1e-9);
+      const std::vector<double> k1 = vertexCurvatures(r.mesh);
+      double worstDeficit = 0;
+      for (int v = 0; v < m.nVertices(); ++v)
+        worstDeficit = std::max(worstDeficit, std::abs(k1[v] - (v < n0 ? k0[v] : 0.0)));
+      CHECK(worstDeficit < 1e-9);
+      CHECK(std::abs(totalArea(r.mesh) - inputArea) <= 1e-12 * inputArea);
+      // The located points: input vertices at their own corners, inserted ones inside an input face, and every edge
+      // whose ends lie in one input face as long as the straight distance of its ends there (an independent
+      // measurement: the lengths come from the refinement's flips and insertions, the locations from tracing).
+      REQUIRE(r.location.size() == static_cast<std::size_t>(m.nVertices()));
+      for (int v = 0; v < m.nVertices(); ++v) {
+        const auto& b = r.location[v].bary;
+        CHECK(std::min({b[0], b[1], b[2]}) >= 0);
+        CHECK(b[0] + b[1] + b[2] == Approx(1).epsilon(1e-14));
+        if (v < n0)
+          CHECK(in.triangulation.mesh.faceVertex(r.location[v].face,
+                                                 std::max_element(b.begin(), b.end()) - b.begin()) == v);
+      }
+      CHECK(r.sameFaceEdges > 0);
+      CHECK(r.maxSameFaceLengthError < 1e-9);
+      CHECK(r.invertedTriangles == 0);
+      CHECK(r.orientationChecked > 0);
+      for (double l : r.lambda) CHECK(l == 0);
+      // The input's own curvature measure: atoms kept at the input vertices, so the check is exact to round-off.
+      CHECK(meshCurvatureMeasure(r, in.triangulation).maxAbsoluteError < 1e-9);
+    }
+  }
+}
+
+TEST_CASE("mesh remesh in the input metric: planar disk, every length is the distance of its ends' located positions") {
+  // The input is a plane with a polygonal boundary: every geodesic is a straight segment, so each output length must
+  // be the Euclidean distance of its two ends' positions interpolated at their input locations — every edge, not only
+  // those within one face. Boundary edges are split where they lie, so every vertex stays on the input.
+  const MeshInput in = meshInputFromData(jitteredDisk());
+  MeshRemeshOptions o;
+  o.epsilon = 0.05;
+  o.refineIn = RefineMetric::Input;
+  const MeshRemeshResult r = remeshMesh(in.triangulation, in.positions, o);
+  REQUIRE(r.refinement.boundarySplits > 0);
+  CHECK(relativeLengthMismatch(r) < 1e-12);
+  for (const auto& p : r.positions) CHECK(p.z() == 0);
+  CHECK(r.quality.minAngleDeg >= 20.7);
+  CHECK(r.quality.maxCircumradius <= o.epsilon * (1 + 1e-12));
+  CHECK(totalArea(r.mesh) == Approx(totalArea(in.triangulation)).epsilon(1e-13));
+  CHECK(std::abs(r.quality.gaussBonnetResidual) < 1e-9);
+  CHECK(r.invertedTriangles == 0);
+}
+
+TEST_CASE("mesh remesh in the input metric: one smoothing pass keeps every bound and raises the mean smallest angle") {
+  const MeshInput in = cgalMesh("eight.off");
+  MeshRemeshOptions o;
+  o.epsilon = 0.01;
+  o.refineIn = RefineMetric::Input;
+  const MeshRemeshResult plain = remeshMesh(in.triangulation, in.positions, o);
+  o.refinement.smoothingPasses = 1;
+  const MeshRemeshResult smoothed = remeshMesh(in.triangulation, in.positions, o);
+  CHECK(smoothed.refinement.smoothingMoves > 0);
+  CHECK(smoothed.quality.minAngleDeg >= 20.7);
+  CHECK(smoothed.quality.maxCircumradius <= o.epsilon * (1 + 1e-12));
+  CHECK(countNonDelaunayEdges(smoothed.mesh) == 0);
+  CHECK(smoothed.maxSameFaceLengthError < 1e-9);
+  CHECK(smoothed.invertedTriangles == 0);
+  CHECK(totalArea(smoothed.mesh) == Approx(totalArea(in.triangulation)).epsilon(1e-12));
+  CHECK(smoothed.quality.meanMinAngleDeg > plain.quality.meanMinAngleDeg);
+}
+
 TEST_CASE("mesh remesh: bad input is named") {
   SECTION("an edge in three faces") {
     MeshData d;
@@ -187,5 +320,20 @@ TEST_CASE("mesh remesh: bad input is named") {
     o.epsilon = 0.1;
     o.inputSubdivisions = 9;
     CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o), Catch::Contains("subdivisions"));
+  }
+  SECTION("options of the uniformized route on the input route") {
+    const MeshInput in = meshInputFromData(makeDisk({}));
+    MeshRemeshOptions o;
+    o.epsilon = 0.1;
+    o.refineIn = RefineMetric::Input;
+    o.inputSubdivisions = 1;
+    CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o), Catch::Contains("subdivisions"));
+    o.inputSubdivisions = 0;
+    o.uniform = true;
+    CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o), Catch::Contains("--uniform"));
+    o.uniform = false;
+    o.refinement.boundarySplit = BoundarySplit::Circle;
+    CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o), Catch::Contains("circle"));
+    CHECK_THROWS_WITH(parseRefineMetric("flat"), Catch::Contains("flat") && Catch::Contains("uniformized, input"));
   }
 }
