@@ -78,4 +78,17 @@ void writeMeshOutputs(const intrinsic::MeshData& data, const std::string& path, 
   }
 }
 
+void addSmoothingOptions(CLI::App* sub, int& passes, std::string& rule, const std::string& note) {
+  sub->add_option("--smoothing", passes,
+                  "Smoothing passes after refinement: each moves every inserted interior vertex within its star to "
+                  "raise its triangles' smallest angles (never lowering the star's smallest angle; input locations "
+                  "re-traced), restores Delaunay and re-runs the refinement, so every bound still holds. " +
+                      note)
+      ->capture_default_str();
+  sub->add_option("--smoothing-rule", rule,
+                  "Start of each vertex's search: odt (optimal Delaunay point: area-weighted circumcentres, default) "
+                  "or centroid (area-weighted centroids)")
+      ->check(CLI::IsMember({"odt", "centroid"}));
+}
+
 }  // namespace conformesh::apps

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "conformesh/intrinsic/gaussian_curvature_measure.h"
@@ -46,5 +47,9 @@ void addCurvatureMeasureProperties(intrinsic::MeshData& data, const intrinsic::C
 // records both paths in `report` ("output", "vtk").
 void writeMeshOutputs(const intrinsic::MeshData& data, const std::string& path, bool ascii, const std::string& vtkPath,
                       const std::function<intrinsic::VtkMesh()>& makeVtk, nlohmann::json& report);
+
+// Registers `--smoothing N` and `--smoothing-rule odt|centroid` (RefineOptions::smoothingPasses / smoothingRule) on
+// `sub`, the shared help text followed by `note` (what the command's default is and where it applies).
+void addSmoothingOptions(CLI::App* sub, int& passes, std::string& rule, const std::string& note);
 
 }  // namespace conformesh::apps

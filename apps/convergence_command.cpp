@@ -221,14 +221,9 @@ void registerConvergenceCommand(CLI::App& app) {
                   "Disk charts: 'circle' maps to the unit disk; 'keep-boundary' flattens keeping the boundary lengths "
                   "(corners keep their angles); 'auto' (default) keeps the boundary of rectangle charts")
       ->check(CLI::IsMember({"auto", "circle", "keep-boundary"}));
-  sub->add_option("--smoothing", a->smoothing,
-                  "Smoothing passes after each refinement: inserted interior vertices move within their stars to "
-                  "raise their triangles' smallest angles (input locations re-traced), then refinement re-runs so "
-                  "every bound still holds; raises the mean smallest angle. 0 = the paper's unsmoothed refinement")
-      ->capture_default_str();
-  sub->add_option("--smoothing-rule", a->smoothingRule,
-                  "Start of each vertex's search: odt (optimal Delaunay point, default) or centroid")
-      ->check(CLI::IsMember({"odt", "centroid"}));
+  addSmoothingOptions(sub, a->smoothing, a->smoothingRule,
+                      "Applied at every level; raises the mean smallest angle (docs/studies.md). 0 = the paper's "
+                      "unsmoothed refinement");
   sub->add_option("-o,--output", a->prefix, "Prefix of the files written (default: convergence)");
   sub->add_flag("--json", a->json, "Print the table and orders as JSON");
   sub->add_flag("--no-plot", a->noPlot, "Do not draw the PNG plots");

@@ -182,15 +182,7 @@ void registerRefineCommand(CLI::App& app) {
   sub->add_flag("--off-centers", args->offCenters,
                 "Split bad-shaped triangles at Üngör's off-centre instead of the circumcentre when nearer (Euclidean "
                 "background; same bounds, usually fewer vertices when grading drives the refinement)");
-  sub->add_option("--smoothing", args->smoothing,
-                  "Smoothing passes after refinement: each moves every inserted interior vertex within its star to "
-                  "raise its triangles' smallest angles (never lowering the star's smallest angle; input locations "
-                  "re-traced), restores Delaunay and re-runs the refinement, so the bounds still hold")
-      ->capture_default_str();
-  sub->add_option("--smoothing-rule", args->smoothingRule,
-                  "Start of each vertex's search: odt (optimal Delaunay point: area-weighted circumcentres, default) "
-                  "or centroid (area-weighted centroids)")
-      ->check(CLI::IsMember({"odt", "centroid"}));
+  addSmoothingOptions(sub, args->smoothing, args->smoothingRule, "0 = the paper's unsmoothed refinement (default)");
   sub->add_option("--max-insertions", args->maxInsertions, "Stop with an error after this many insertions");
   sub->add_option("-o,--output", args->output, "Output .ply (edge lengths, background, input locations)")->required();
   sub->add_flag("--json", args->json, "Print the statistics and quality report as JSON on stdout");

@@ -148,16 +148,10 @@ void registerRemeshCommand(CLI::App& app) {
   sub->add_flag("--no-check", a->noCheck, "Skip the curvature-measure check");
   sub->add_option("--region", a->region, "Regions of the check: ball (default) or union (Theorem 3.4's unions)")
       ->check(CLI::IsMember({"ball", "union"}));
-  sub->add_option("--smoothing", a->smoothing,
-                  "Smoothing passes after refinement: inserted interior vertices move within their stars to raise "
-                  "their triangles' smallest angles (input locations re-traced), then refinement re-runs so every "
-                  "bound still holds; raises the mean smallest angle (`convergence` uses 1), at ~3.5x the refinement "
-                  "time. 0 = the paper's unsmoothed refinement. Metric families, fields and mesh files with "
-                  "--refine-in input (a mesh refined uniformized is refined unsmoothed; --smoothing is then an error)")
-      ->capture_default_str();
-  sub->add_option("--smoothing-rule", a->smoothingRule,
-                  "Start of each vertex's search: odt (optimal Delaunay point, default) or centroid")
-      ->check(CLI::IsMember({"odt", "centroid"}));
+  addSmoothingOptions(sub, a->smoothing, a->smoothingRule,
+                      "Raises the mean smallest angle (`convergence` uses 1), at ~3.5x the refinement time. 0 = the "
+                      "paper's unsmoothed refinement. Metric families, fields and mesh files with --refine-in input (a "
+                      "mesh refined uniformized is refined unsmoothed; --smoothing is then an error)");
   sub->add_option("--refine-in", a->refineIn,
                   "Mesh files: the metric the Delaunay refinement runs in. 'uniformized' (default, the paper's): the "
                   "Ricci-flow uniformization, graded by exp(-lambda), pulled back through the input faces; 'input': "
