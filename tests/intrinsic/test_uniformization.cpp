@@ -548,3 +548,51 @@ TEST_CASE("a real annulus (CGAL's blobby_3cc.off, its two-loop component) become
   CHECK(logRatio > lower);
   CHECK(logRatio < upper);
 }
+
+TEST_CASE("an annulus too long for planar coordinates (CGAL's blade.off) is refused with a bound on its modulus") {
+  // blade.off is a tube of circumference ≈ 24 and length ≈ 130: its circle domain's inner circle would be ~10⁻¹⁷ of
+  // the outer one. The error must say so, with a lower bound that the independent bracket confirms.
+  const IntrinsicTriangulation input = toTriangulation(readMesh(dataFile("blade.off")));
+  const auto [lower, upper] = annulusLogRadiusRatioBounds(input);
+  std::string message;
+  try {
+    uniformize(input);
+  } catch (const conformesh::InputError& e) {
+    message = e.what();
+  }
+  INFO(message << "\nDirichlet bracket [" << lower << ", " << upper << "]");
+  REQUIRE_THAT(message, Catch::Contains("conformal modulus at least") && Catch::Contains("cannot resolve"));
+  const std::string key = "log(R/r) >= ";
+  const double reported = std::stod(message.substr(message.find(key) + key.size()));
+  CHECK(reported == Approx(lower).epsilon(1e-5));  // the same bound (6 digits in the message)
+  CHECK(upper > reported);
+  CHECK(lower > std::log(1e-8 / std::numeric_limits<double>::epsilon()));  // really beyond 1e-8 at double precision
+}
+
+TEST_CASE("flat cylinders of growing modulus: circles of the right modulus, or an error, never a silent wrong domain") {
+  // The 24-gon tube of height H is exactly a flat cylinder, conformal to {r < |z| < 1} with log(1/r) = 2πH/C. Below
+  // the layout's resolution the result must be refused; above it, every loop a circle and the modulus within the
+  // discretization error of vertex scaling (measured 0.6 % at log(1/r) = 8).
+  const int n = 24;
+  const double C = 2 * n * std::sin(M_PI / n);
+  for (double logRatio : {4.0, 8.0, 12.0, 15.0, 17.0, 20.0, 30.0}) {
+    const int rows = static_cast<int>(std::lround(logRatio * n / (2 * M_PI)));
+    const IntrinsicTriangulation input =
+        toTriangulation(conformesh::testing::cylinderGrid(n, rows, logRatio * C / (2 * M_PI)));
+    INFO("log(R/r) = " << logRatio);
+    try {
+      const Uniformization u = uniformize(input);
+      const IntrinsicTriangulation out = roundTrip(u, "cylinder");
+      CHECK(maxInteriorAngleError(out) < 1e-10);
+      const auto fits = loopCentres(out);
+      const auto circles = loopCircles(out);
+      for (const auto& [R, dev] : circles) CHECK(dev < 1e-8);
+      const double R1 = fits[0].second, R2 = fits[1].second, d = (fits[0].first - fits[1].first).norm();
+      CHECK(std::acosh((R1 * R1 + R2 * R2 - d * d) / (2 * R1 * R2)) == Approx(logRatio).epsilon(0.01));
+    } catch (const conformesh::InputError& e) {
+      CHECK_THAT(e.what(), Catch::Contains("cannot resolve"));
+    } catch (const conformesh::ConvergenceError& e) {
+      CHECK_THAT(e.what(), Catch::Contains("does not resolve its circle"));
+    }
+  }
+}

@@ -1,6 +1,6 @@
 // test_meshes.h — tiny closed-form meshes for the core tests (icosahedron, torus and planar grids, a one-vertex torus
-// Δ-complex), built here rather than by the library's generators so that the core is tested independently of them;
-// and the split of a real mesh file into its connected components.
+// Δ-complex, a flat cylinder), built here rather than by the library's generators so that the core is tested
+// independently of them; and the split of a real mesh file into its connected components.
 #pragma once
 
 #include <array>
@@ -86,6 +86,27 @@ inline MeshData oneVertexTorus(double a = 1.0, double b = 1.0) {
   d.cornerEdges = {{0, 1, 2}, {2, 0, 1}};
   d.edges = {{0, 0, a}, {0, 0, b}, {0, 0, std::hypot(a, b)}};
   d.source = "one-vertex torus";
+  return d;
+}
+
+// A tube over the regular n-gon inscribed in the unit circle, `rows` rows of triangles up to height `height`, ring i
+// rotated by half a step against ring i − 1: a flat cylinder (its faces unroll into a strip) of circumference
+// C = 2n sin(π/n), hence conformal to the annulus with log(R/r) = 2π height / C exactly.
+inline MeshData cylinderGrid(int n, int rows, double height) {
+  MeshData d;
+  for (int i = 0; i <= rows; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double t = 2 * M_PI * (j + 0.5 * i) / n;
+      d.positions.emplace_back(std::cos(t), std::sin(t), height * i / rows);
+    }
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = i * n + j, b = i * n + (j + 1) % n, c = (i + 1) * n + j, e = (i + 1) * n + (j + n - 1) % n;
+      d.faces.push_back({a, b, c});
+      d.faces.push_back({a, c, e});
+    }
+  d.nVertices = (rows + 1) * n;
+  d.source = "cylinder grid";
   return d;
 }
 
