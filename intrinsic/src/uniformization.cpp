@@ -177,7 +177,9 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
     }
   }
   if (loopsH.size() == 2) {
-    const double atLeast = annulusLogRadiusRatioLowerBound(input, loopTips[0], loopTips[1]);
+    // On the reference chords: the Euclidean metric whose conformal class the flow works in (the input itself when
+    // Euclidean).
+    const double atLeast = annulusLogRadiusRatioLowerBound(referencePenner(input), loopTips[0], loopTips[1]);
     if (atLeast > kMaxAnnulusLogRadiusRatio) {
       std::ostringstream message;
       message.precision(6);
