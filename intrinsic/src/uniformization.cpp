@@ -93,8 +93,9 @@ void attachScale(Uniformization& out, const std::vector<double>& w, FlowCorrespo
 // the outer circle's frame, are resolved only to ε/e^{−Λ} relative (ε the double epsilon); beyond Λ = log(10⁻⁸/ε)
 // ≈ 17.6 they cannot be circles to 10⁻⁸, the accuracy the tests ask of every loop.
 const double kMaxAnnulusLogRadiusRatio = std::log(1e-8 / std::numeric_limits<double>::epsilon());
-// Largest relative radius deviation of a laid-out loop from its circle accepted from the layout (measured ≤ 10⁻¹⁰ on
-// well-resolved domains; 6·10⁻⁴ on a cylinder grid with Λ = 15, whose inner circle the layout no longer resolves).
+// Largest relative radius deviation of a laid-out loop from its circle accepted from the layout (measured 10⁻¹⁵ to
+// 2·10⁻⁸ where the layout is right, the worst a cylinder grid with Λ = 10; 6·10⁻⁴ on a cylinder grid with Λ = 15, whose
+// inner circle the layout no longer resolves).
 constexpr double kMaxLoopCircleDeviation = 1e-6;
 
 // A lower bound on Λ = log(R/r) of the input's own (piecewise flat) annulus, by the Dirichlet principle: the harmonic
