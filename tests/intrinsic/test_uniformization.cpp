@@ -1,18 +1,21 @@
-// test_uniformization.cpp — T0 → T0* on real meshes of CGAL's data set (genus 0, 1, 2, 3, a disk, a domain with four
-// boundary loops): interior angle sums 2π in the background geometry from the lengths as written to and read back
-// from PLY, Gauss–Bonnet with the area term, boundary loops concyclic, λ consistent with the Penner relation; the
-// flat torus of a torus of revolution against its exact modulus i·r/√(R² − r²), with the order of a log–log fit; an
-// ellipsoid against its conformal latitude; a planar annulus (already a circle domain) reproduced exactly;
-// inadmissible inputs reported.
+// test_uniformization.cpp — T0 → T0* on real meshes of CGAL's data set (genus 0, 1, 2, 3, a disk, an annulus, domains
+// with three and four boundary loops): interior angle sums 2π in the background geometry from the lengths as written to
+// and read back from PLY, Gauss–Bonnet with the area term, boundary loops concyclic, λ consistent with the Penner
+// relation; the flat torus of a torus of revolution against its exact modulus i·r/√(R² − r²), with the order of a
+// log–log fit; an ellipsoid against its conformal latitude; a planar annulus (already a circle domain) reproduced
+// exactly; inadmissible inputs reported.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
+
+#include <Eigen/Sparse>
 
 #include "conformesh/intrinsic/convergence_order.h"
 #include "conformesh/intrinsic/curvature.h"
@@ -24,6 +27,7 @@
 #include "conformesh/intrinsic/uniformization.h"
 
 #include "../support/flat_torus_modulus.h"
+#include "../support/test_meshes.h"
 
 using namespace conformesh::intrinsic;
 using conformesh::testing::flatTorusModulus;
@@ -370,4 +374,226 @@ TEST_CASE("a spherical cap converges to its stereographic projection onto the un
   // is not regular, so no more than that is asserted; the measured order is reported in docs/ricci_flow.md.
   CHECK(order > 0.9);
   CHECK(error.back() < error.front());
+}
+
+namespace {
+
+// min over piecewise-linear f of the Dirichlet energy Σ_h ½ cot θ_h (f_tip − f_tail + ω_h)² (θ_h the angle opposite
+// halfedge h: the exact energy of the linear interpolant, face by face), with f = fixed[v] where fixed[v] is finite
+// and f_0 = 0 when nothing is fixed (the energy only sees differences).
+double minDirichletEnergy(const IntrinsicTriangulation& tri, const std::vector<double>& fixed,
+                          const std::vector<double>& omega) {
+  const int nv = tri.mesh.nVertices();
+  const bool pinFirst = std::none_of(fixed.begin(), fixed.end(), [](double x) { return std::isfinite(x); });
+  std::vector<int> unknown(nv, -1);
+  int n = 0;
+  for (int v = pinFirst ? 1 : 0; v < nv; ++v)
+    if (!std::isfinite(fixed[v])) unknown[v] = n++;
+  std::vector<double> known(nv, 0.0);
+  for (int v = 0; v < nv; ++v)
+    if (std::isfinite(fixed[v])) known[v] = fixed[v];
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+  for (int h = 0; h < tri.mesh.nHalfedges(); ++h) {
+    const double w = 0.5 * cotanOpposite(tri, h);
+    const int a = tri.mesh.tail(h), b = tri.mesh.tip(h);
+    // Gradient of w (f_b − f_a + c)², c the known part, with respect to the unknowns among f_a, f_b.
+    const double c = (unknown[b] < 0 ? known[b] : 0.0) - (unknown[a] < 0 ? known[a] : 0.0) + omega[h];
+    const int ia = unknown[a], ib = unknown[b];
+    if (ia >= 0) {
+      entries.emplace_back(ia, ia, w);
+      rhs[ia] += w * c;
+    }
+    if (ib >= 0) {
+      entries.emplace_back(ib, ib, w);
+      rhs[ib] -= w * c;
+    }
+    if (ia >= 0 && ib >= 0) {
+      entries.emplace_back(ia, ib, -w);
+      entries.emplace_back(ib, ia, -w);
+    }
+  }
+  Eigen::SparseMatrix<double> L(n, n);
+  L.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(L);
+  REQUIRE(solver.info() == Eigen::Success);
+  const Eigen::VectorXd x = solver.solve(rhs);
+  std::vector<double> f = known;
+  for (int v = 0; v < nv; ++v)
+    if (unknown[v] >= 0) f[v] = x[unknown[v]];
+  double energy = 0;
+  for (int h = 0; h < tri.mesh.nHalfedges(); ++h) {
+    const double d = f[tri.mesh.tip(h)] - f[tri.mesh.tail(h)] + omega[h];
+    energy += 0.5 * cotanOpposite(tri, h) * d * d;
+  }
+  return energy;
+}
+
+// Two-sided bounds on log(R/r), the conformal modulus times 2π, of a flat-with-cone-points annulus (the input's own
+// piecewise-flat surface) by the Dirichlet principle, independently of the flow. For {r < |z| < R}: the harmonic
+// measure h (0 on one loop, 1 on the other) has energy 2π/log(R/r), the angle function θ/2π (period 1 around the
+// core) has energy log(R/r)/2π, and each is the minimum over its class; piecewise-linear functions are a subclass, so
+// 2π/E_h ≤ log(R/r) ≤ 2π E*_h. The period-1 class is f + ω with ω the closed 1-form that is ±1 on the edges a dual
+// path from loop A to loop B crosses (and on its two boundary edges), 0 elsewhere.
+std::pair<double, double> annulusLogRadiusRatioBounds(const IntrinsicTriangulation& tri) {
+  const std::vector<std::vector<int>> loops = tri.mesh.boundaryLoops();
+  REQUIRE(loops.size() == 2);
+  std::vector<int> loopOf(tri.mesh.nHalfedges(), -1);
+  for (int l = 0; l < 2; ++l)
+    for (int h : loops[l]) loopOf[h] = l;
+
+  std::vector<double> fixed(tri.mesh.nVertices(), std::numeric_limits<double>::quiet_NaN());
+  for (int l = 0; l < 2; ++l)
+    for (int h : loops[l]) fixed[tri.mesh.tail(h)] = l;
+  const double energyHarmonic = minDirichletEnergy(tri, fixed, std::vector<double>(tri.mesh.nHalfedges(), 0.0));
+
+  // Breadth-first search over faces through interior edges, from the face of loop A's first halfedge to a face with a
+  // halfedge on loop B.
+  const int nf = tri.mesh.nFaces();
+  std::vector<int> cameThrough(nf, -2);  // the halfedge of the previous face crossed into this one; −1 at the start
+  const int start = HalfedgeMesh::face(loops[0][0]);
+  cameThrough[start] = -1;
+  std::vector<int> queue{start};
+  int end = -1;
+  for (std::size_t q = 0; q < queue.size() && end < 0; ++q) {
+    const int f = queue[q];
+    for (int k = 0; k < 3; ++k) {
+      const int h = HalfedgeMesh::halfedge(f, k);
+      if (loopOf[h] == 1) {
+        end = f;
+        break;
+      }
+      const int t = tri.mesh.twin(h);
+      if (t != kInvalid && cameThrough[HalfedgeMesh::face(t)] == -2) {
+        cameThrough[HalfedgeMesh::face(t)] = h;
+        queue.push_back(HalfedgeMesh::face(t));
+      }
+    }
+  }
+  REQUIRE(end >= 0);
+  std::vector<double> omega(tri.mesh.nHalfedges(), 0.0);
+  omega[loops[0][0]] = -1;  // entering the start face from outside across loop A
+  for (int k = 0; k < 3; ++k)
+    if (loopOf[HalfedgeMesh::halfedge(end, k)] == 1) {
+      omega[HalfedgeMesh::halfedge(end, k)] += 1;  // leaving the end face across loop B
+      break;
+    }
+  for (int f = end; cameThrough[f] >= 0; f = HalfedgeMesh::face(cameThrough[f])) {
+    omega[cameThrough[f]] += 1;
+    omega[tri.mesh.twin(cameThrough[f])] -= 1;
+  }
+  for (int f = 0; f < nf; ++f)  // closed: the path enters and leaves every face it visits
+    REQUIRE(omega[3 * f] + omega[3 * f + 1] + omega[3 * f + 2] == 0);
+  const double energyAngle = minDirichletEnergy(
+      tri, std::vector<double>(tri.mesh.nVertices(), std::numeric_limits<double>::quiet_NaN()), omega);
+  return {2 * M_PI / energyHarmonic, 2 * M_PI * energyAngle};
+}
+
+// Centre and radius of the circle through three spread vertices of each boundary loop of a flat triangulation laid
+// out in the plane (the frame of loopCircles, which checks that every vertex is on it).
+std::vector<std::pair<Eigen::Vector2d, double>> loopCentres(const IntrinsicTriangulation& tri) {
+  const std::vector<Eigen::Vector2d> p = layoutFlat(tri);
+  std::vector<std::pair<Eigen::Vector2d, double>> out;
+  for (const auto& loop : tri.mesh.boundaryLoops()) {
+    const int n = static_cast<int>(loop.size());
+    const Eigen::Vector2d A = p[tri.mesh.tail(loop[0])], B = p[tri.mesh.tail(loop[n / 3])],
+                          C = p[tri.mesh.tail(loop[2 * n / 3])];
+    // The centre solves (B − A)·c = (|B|² − |A|²)/2, (C − A)·c = (|C|² − |A|²)/2 (Cramer's rule).
+    const Eigen::Vector2d b = B - A, e = C - A;
+    const double rb = 0.5 * (B.squaredNorm() - A.squaredNorm()), re = 0.5 * (C.squaredNorm() - A.squaredNorm());
+    const double det = b.x() * e.y() - b.y() * e.x();
+    const Eigen::Vector2d c((rb * e.y() - re * b.y()) / det, (b.x() * re - e.x() * rb) / det);
+    out.emplace_back(c, (A - c).norm());
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a real annulus (CGAL's blobby_3cc.off, its two-loop component) becomes a circle domain of its modulus") {
+  // blobby_3cc.off holds three surfaces: two disks and a band of 701 vertices with two boundary loops, genus 0.
+  std::vector<IntrinsicTriangulation> annuli;
+  for (const MeshData& part : conformesh::testing::connectedComponents(readMesh(dataFile("blobby_3cc.off")))) {
+    IntrinsicTriangulation tri = toTriangulation(part);
+    const ComponentTopology topology = tri.mesh.components().at(0);
+    if (topology.genus == 0 && topology.boundaryLoops == 2) annuli.push_back(std::move(tri));
+  }
+  REQUIRE(annuli.size() == 1);
+  const IntrinsicTriangulation& input = annuli[0];
+
+  const Uniformization u = uniformize(input);
+  CHECK(u.report.target == UniformizationTarget::CircleDomain);
+  CHECK(u.report.boundaryLoops == 2);
+  const IntrinsicTriangulation out = roundTrip(u, "blobby_3cc-annulus");
+  INFO("Newton steps " << u.report.newtonSteps << ", flips " << u.report.flips);
+  CHECK(maxInteriorAngleError(out) < 1e-10);
+  CHECK(std::abs(curvatureTotals(out).gaussBonnetResidual) < 1e-9);
+  CHECK(countNonDelaunayEdges(out) == 0);
+  const auto circles = loopCircles(out);
+  REQUIRE(circles.size() == 2);
+  for (const auto& [R, dev] : circles) CHECK(dev < 1e-8);
+  CHECK(std::max(circles[0].first, circles[1].first) == Approx(1.0).epsilon(1e-8));  // the longer loop: unit circle
+  checkLambda(input, u);
+
+  // The modulus against the input's own Dirichlet-principle bracket. Two nested circles (radii R1, R2, centres d
+  // apart) are Möbius-equivalent to {r < |z| < R} with log(R/r) = acosh((R1² + R2² − d²)/(2 R1 R2)), the inversive
+  // distance (Möbius-invariant; for d = 0 it is cosh log(R1/R2)).
+  const auto fits = loopCentres(out);
+  const double R1 = fits[0].second, R2 = fits[1].second, d = (fits[0].first - fits[1].first).norm();
+  const double logRatio = std::acosh((R1 * R1 + R2 * R2 - d * d) / (2 * R1 * R2));
+  const auto [lower, upper] = annulusLogRadiusRatioBounds(input);
+  INFO("log(R/r): flow " << logRatio << " (radii " << R1 << ", " << R2 << ", centres " << d << " apart), Dirichlet "
+                         << "bracket [" << lower << ", " << upper << "]");
+  CHECK(lower < upper);
+  CHECK(logRatio > lower);
+  CHECK(logRatio < upper);
+}
+
+TEST_CASE("an annulus too long for planar coordinates (CGAL's blade.off) is refused with a bound on its modulus") {
+  // blade.off is a tube of circumference ≈ 24 and length ≈ 130: its circle domain's inner circle would be ~10⁻¹⁷ of
+  // the outer one. The error must say so, with a lower bound that the independent bracket confirms.
+  const IntrinsicTriangulation input = toTriangulation(readMesh(dataFile("blade.off")));
+  const auto [lower, upper] = annulusLogRadiusRatioBounds(input);
+  std::string message;
+  try {
+    uniformize(input);
+  } catch (const conformesh::InputError& e) {
+    message = e.what();
+  }
+  INFO(message << "\nDirichlet bracket [" << lower << ", " << upper << "]");
+  REQUIRE_THAT(message, Catch::Contains("conformal modulus at least") && Catch::Contains("cannot resolve"));
+  const std::string key = "log(R/r) >= ";
+  const double reported = std::stod(message.substr(message.find(key) + key.size()));
+  CHECK(reported == Approx(lower).epsilon(1e-5));  // the same bound (6 digits in the message)
+  CHECK(upper > reported);
+  CHECK(lower > std::log(1e-8 / std::numeric_limits<double>::epsilon()));  // really beyond 1e-8 at double precision
+}
+
+TEST_CASE("flat cylinders of growing modulus: circles of the right modulus, or an error, never a silent wrong domain") {
+  // The 24-gon tube of height H is exactly a flat cylinder, conformal to {r < |z| < 1} with log(1/r) = 2πH/C. Below
+  // the layout's resolution the result must be refused; above it, every loop a circle and the modulus within the
+  // discretization error of vertex scaling (measured 0.6 % at log(1/r) = 8).
+  const int n = 24;
+  const double C = 2 * n * std::sin(M_PI / n);
+  // log(R/r) = 2π/n ≈ 0.26 with one row of triangles: every vertex on a loop (the pre-check has no unknowns then).
+  for (double logRatio : {2 * M_PI / n, 4.0, 8.0, 12.0, 15.0, 17.0, 20.0, 30.0}) {
+    const int rows = std::max(1, static_cast<int>(std::lround(logRatio * n / (2 * M_PI))));
+    const IntrinsicTriangulation input =
+        toTriangulation(conformesh::testing::cylinderGrid(n, rows, logRatio * C / (2 * M_PI)));
+    INFO("log(R/r) = " << logRatio);
+    try {
+      const Uniformization u = uniformize(input);
+      const IntrinsicTriangulation out = roundTrip(u, "cylinder");
+      CHECK(maxInteriorAngleError(out) < 1e-10);
+      const auto fits = loopCentres(out);
+      const auto circles = loopCircles(out);
+      for (const auto& [R, dev] : circles) CHECK(dev < 1e-8);
+      const double R1 = fits[0].second, R2 = fits[1].second, d = (fits[0].first - fits[1].first).norm();
+      CHECK(std::acosh((R1 * R1 + R2 * R2 - d * d) / (2 * R1 * R2)) == Approx(logRatio).epsilon(0.01));
+    } catch (const conformesh::InputError& e) {
+      CHECK_THAT(e.what(), Catch::Contains("cannot resolve"));
+    } catch (const conformesh::ConvergenceError& e) {
+      CHECK_THAT(e.what(), Catch::Contains("does not resolve its circle"));
+    }
+  }
 }

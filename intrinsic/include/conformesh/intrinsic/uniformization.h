@@ -81,7 +81,9 @@ struct Uniformization {
 };
 
 // Uniformizes `input` (any background: its Penner lengths are its chords). Throws InputError for more than one
-// connected component or invalid lengths, ConvergenceError (with the residual reached) when a flow does not converge.
+// connected component, invalid lengths, or an annulus whose inner circle planar doubles cannot resolve (a lower bound
+// on its modulus in the message); ConvergenceError (with the residual reached) when a flow does not converge, or when
+// a circle domain's layout does not reproduce a loop's circle (docs/ricci_flow.md §3.3).
 Uniformization uniformize(const IntrinsicTriangulation& input, const UniformizationOptions& options = {});
 
 // Lays out a flat (Euclidean) triangulation of a topological disk or a planar domain in the plane by breadth-first
