@@ -645,7 +645,7 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
         break;
       }
       t *= 0.5;
-      if (options.allowDegenerateFaces && options.returnAtDegenerateStall && t < 1.0 / 16 && !startChecked) {
+      if (options.allowDegenerateFaces && options.returnAtDegenerateStall && t <= 0.5 && !startChecked) {
         // Back to the step's start, where the degenerate faces that the caller can repair are (once per step).
         startChecked = true;
         for (int i = 0; i < n; ++i) metric.u()[unknowns[i]] = u0[unknowns[i]];
