@@ -429,67 +429,30 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   // The test below replaces it: every edge of the layout must have its flow length to 10⁻⁶ relative, or to
   // a = max(10⁻¹⁰, 10 ε sqrt(#V)) of its endpoints' coordinates, ε the flow's stopping tolerance (edges of 10⁻¹² on
   // CGAL's cow cannot be resolved at coordinates of order 1 and need not be: below, the lengths are taken from the
-  // Penner form and the coordinates only enter through smooth conformal factors). The embedding is verified on the
-  // sphere below; this test catches a layout gone wrong.
-  //
-  // A converged flow can still fail it at 10⁶ vertices: the breadth-first unfolding closes an edge ab that is not in
-  // its tree up to the rotation by Σ (2π − Θ_v) over the vertices v enclosed by the loop (tree path + ab), moving b by
-  // up to Σ |2π − Θ_v| · |z_b − z_v| — the residual's ℓ¹ norm times the layout's diameter, not its maximum. Residuals
-  // of one sign over a large region (a Newton step that lands just below ε = 3·10⁻¹⁰) gave 4·10⁻⁵ at coordinates of
-  // 4.5 (measured, box at 10⁶ vertices, puncture 803, every interior angle sum within 9·10⁻¹¹ of 2π and every angle
-  // ≥ 0.047: not a degenerate face, and long double unfolding did not remove it); the next puncture, whose last Newton
-  // step landed at 7.7·10⁻¹⁴, closed to 2·10⁻⁷ of the coordinates. So a failing layout is first polished by Newton
-  // steps to 10⁻¹³ (the floor of the preconditioned solves) and laid out again; only a second failure rejects the
-  // puncture.
-  const double allowance = std::max(1e-10, 10 * report.effectiveTolerance * std::sqrt(double(nV)));
-  IntrinsicTriangulation planarTri;
+  // Penner form and the coordinates only enter through smooth conformal factors). The flow certifies the metric flat
+  // to ε; this test catches a layout gone wrong (layoutFlat: the unfolding is built so that round-off does not grow
+  // across short edges). The embedding is verified on the sphere below.
+  IntrinsicTriangulation planarTri = metric.triangulation();
   std::vector<Eigen::Vector2d> z;
-  for (int pass = 0;; ++pass) {
-    planarTri = metric.triangulation();
-    std::string failure;
-    try {
-      z = layoutFlat(planarTri, std::numeric_limits<double>::infinity(), frozen);
-    } catch (const ConvergenceError& e) {
-      failure = e.what();
-    }
-    for (int f = 0; f < m.nFaces() && failure.empty(); ++f) {
-      if (frozen[f]) continue;
-      for (int k = 0; k < 3; ++k) {
-        const int h = 3 * f + k;
-        const double length = planarTri.length(h), laid = (z[m.tip(h)] - z[m.tail(h)]).norm();
-        if (!(std::abs(laid - length) <= 1e-6 * length + allowance * (z[m.tip(h)].norm() + z[m.tail(h)].norm()))) {
-          std::ostringstream msg;
-          msg.precision(3);
-          msg << "the planar layout gives edge " << m.edge(h) << " the length " << laid << " instead of " << length
-              << " (error " << std::abs(laid - length) << " at coordinates of size " << z[m.tip(h)].norm()
-              << ", allowed 1e-6 of the length plus " << allowance << " of the coordinates)";
-          failure = msg.str();
-          break;
-        }
+  try {
+    z = layoutFlat(planarTri, std::numeric_limits<double>::infinity(), frozen);
+  } catch (const ConvergenceError& e) {
+    return {false, e.what()};
+  }
+  const double allowance = std::max(1e-10, 10 * report.effectiveTolerance * std::sqrt(double(nV)));
+  for (int f = 0; f < m.nFaces(); ++f) {
+    if (frozen[f]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int h = 3 * f + k;
+      const double length = planarTri.length(h), laid = (z[m.tip(h)] - z[m.tail(h)]).norm();
+      if (!(std::abs(laid - length) <= 1e-6 * length + allowance * (z[m.tip(h)].norm() + z[m.tail(h)].norm()))) {
+        std::ostringstream msg;
+        msg.precision(3);
+        msg << "the planar layout gives edge " << m.edge(h) << " the length " << laid << " instead of " << length
+            << " (error " << std::abs(laid - length) << " at coordinates of size " << z[m.tip(h)].norm()
+            << ", allowed 1e-6 of the length plus " << allowance << " of the coordinates)";
+        return {false, msg.str()};
       }
-    }
-    if (failure.empty()) break;
-    if (pass > 0) {
-      std::ostringstream msg;
-      msg.precision(3);
-      msg << failure << ", after polishing the flow to max |Θ̂ − Θ| = " << report.maxResidual << " rad";
-      return {false, msg.str()};
-    }
-    if (options.progress) options.progress("sphere: " + failure + "; polishing the flow to 1e-13 rad");
-    RicciFlowOptions polish = flow;
-    polish.tolerance = 1e-13;
-    polish.relativeFloor = 0;
-    polish.maxNewtonSteps = 3;
-    polish.returnAtDegenerateStall = false;
-    try {
-      const RicciFlowReport polished = solveConformalFlow(metric, target, polish, &log);
-      report.newtonSteps += polished.newtonSteps;
-      report.flips += polished.flips;
-      report.factorizations += polished.factorizations;
-      report.cgIterations += polished.cgIterations;
-      report.maxResidual = polished.maxResidual;
-    } catch (const ConvergenceError&) {
-      // Round-off stops the polish short of 10⁻¹³: it leaves the metric at its last accepted step.
     }
   }
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
@@ -669,21 +632,42 @@ std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, doubl
     p[v] = q;
     placed[v] = 1;
   };
+  // Every halfedge of a laid-out face gets its direction by rotating the direction of the edge the face was reached
+  // across by the face's angles — never from the difference of its endpoints' coordinates. That difference carries
+  // the coordinates' absolute round-off, which on a short edge is a large direction error, and the unfolding carries
+  // it to everything beyond. The punctured plane of the sphere has edges of 10⁻⁵ and of 10² (box, 10⁶ vertices):
+  // unfolded from coordinate differences it closed edges only to 2·10⁻⁴ of the coordinates although every angle sum
+  // was 2π to 3·10⁻¹⁴; long double coordinates gave 2·10⁻⁵ from face 0 and 0.56 from the face with the shortest edges.
+  // With rotated directions the direction errors are sums of the angles' round-off along the path, independent of
+  // the edge lengths: 1.2·10⁻⁹ from face 0, 9·10⁻¹⁰ from that face (measured; the 10⁵-vertex box: 10⁻¹¹ instead of
+  // 3·10⁻¹⁰).
+  std::vector<Eigen::Vector2d> dir(m.nHalfedges(), Eigen::Vector2d::Zero());
+  auto rotate = [](const Eigen::Vector2d& d, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return Eigen::Vector2d(c * d.x() - s * d.y(), s * d.x() + c * d.y());
+  };
+  // Face of halfedge h (a → b, direction known), third vertex c to the left of a → b: place c from a and set the
+  // directions of the other two halfedges (c → a and b → c), rotating a → b by the angle at a (counter-clockwise) and
+  // b → a by the angle at b (clockwise).
+  auto layFace = [&](int h) {
+    const int pv = HalfedgeMesh::prev(h), nx = HalfedgeMesh::next(h);
+    const Eigen::Vector2d ac = rotate(dir[h], cornerAngle(tri, h));
+    place(m.tail(pv), p[m.tail(h)] + tri.length(pv) * ac);
+    dir[pv] = -ac;
+    dir[nx] = rotate(-dir[h], -cornerAngle(tri, nx));
+  };
   std::vector<int> queue;
   for (int seed = 0; seed < m.nFaces(); ++seed) {
     if (done[seed] || skip(seed)) continue;
     // Place the seed face with its first edge on the x-axis.
     const int h = 3 * seed;
-    const int a = m.tail(h), b = m.tip(h), c = m.tail(HalfedgeMesh::prev(h));
+    const int a = m.tail(h), b = m.tip(h);
     if (!placed[a] && !placed[b]) {
       place(a, Eigen::Vector2d(0, 0));
       place(b, Eigen::Vector2d(tri.length(h), 0));
     }
-    const double theta = cornerAngle(tri, h);
-    const Eigen::Vector2d dir = (p[b] - p[a]).normalized();
-    place(c, p[a] + tri.length(HalfedgeMesh::prev(h)) *
-                        Eigen::Vector2d(std::cos(theta) * dir.x() - std::sin(theta) * dir.y(),
-                                        std::sin(theta) * dir.x() + std::cos(theta) * dir.y()));
+    dir[h] = (p[b] - p[a]).normalized();
+    layFace(h);
     done[seed] = 1;
     queue.assign(1, seed);
     for (std::size_t qi = 0; qi < queue.size(); ++qi) {
@@ -693,13 +677,9 @@ std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, doubl
         if (t == kInvalid) continue;
         const int g = HalfedgeMesh::face(t);
         if (done[g] || skip(g)) continue;
-        // In g, t runs from a to b (both placed: they are f's vertices); the third vertex lies to the left of a→b.
-        const int ga = m.tail(t), gb = m.tip(t), gc = m.tail(HalfedgeMesh::prev(t));
-        const double th = cornerAngle(tri, t);
-        const Eigen::Vector2d d = (p[gb] - p[ga]).normalized();
-        place(gc,
-              p[ga] + tri.length(HalfedgeMesh::prev(t)) * Eigen::Vector2d(std::cos(th) * d.x() - std::sin(th) * d.y(),
-                                                                          std::sin(th) * d.x() + std::cos(th) * d.y()));
+        // In g, t runs from a to b (both placed: they are f's vertices), opposite to f's halfedge.
+        dir[t] = -dir[3 * f + k];
+        layFace(t);
         done[g] = 1;
         queue.push_back(g);
       }
