@@ -640,7 +640,7 @@ std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, doubl
   // was 2π to 3·10⁻¹⁴; long double coordinates gave 2·10⁻⁵ from face 0 and 0.56 from the face with the shortest edges.
   // With rotated directions the direction errors are sums of the angles' round-off along the path, independent of
   // the edge lengths: 1.2·10⁻⁹ from face 0, 9·10⁻¹⁰ from that face (measured; the 10⁵-vertex box: 10⁻¹¹ instead of
-  // 3·10⁻¹⁰).
+  // 1–3·10⁻¹⁰).
   std::vector<Eigen::Vector2d> dir(m.nHalfedges(), Eigen::Vector2d::Zero());
   auto rotate = [](const Eigen::Vector2d& d, double angle) {
     const double c = std::cos(angle), s = std::sin(angle);
