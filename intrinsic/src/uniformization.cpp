@@ -384,6 +384,52 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     metric.setFrozenFaces(frozen);
     return true;
   };
+  // Θ_a over the non-frozen faces at a, with the flow's extension (π, 0, 0) of faces violating the triangle inequality;
+  // it decreases monotonically in u_a (∂θ_a/∂u_a = −½(cot θ_b + cot θ_c) < 0 in a valid face, the extension is locally
+  // constant), from π·(#faces) at u_a → −∞ (a's edges short: θ_a = π in every face) to 0 at u_a → +∞.
+  auto angleSumAt = [&](int a) {
+    double sum = 0;
+    const int h0 = m.vertexHalfedge(a);
+    int h = h0;
+    do {
+      if (!frozen[HalfedgeMesh::face(h)]) {
+        // Corner a of the face is opposite the edge of next(h); the edges of h and prev(h) meet at a.
+        const double opposite = metric.length(m.edge(HalfedgeMesh::next(h))), b = metric.length(m.edge(h)),
+                     c = metric.length(m.edge(HalfedgeMesh::prev(h)));
+        if (isValidTriangle(Background::Euclidean, opposite, b, c))
+          sum += angleOpposite(Background::Euclidean, opposite, b, c);
+        else if (opposite >= b && opposite >= c)
+          sum += M_PI;
+      }
+      h = m.nextOutgoing(h);
+    } while (h != h0);
+    return sum;
+  };
+  // Bisection for Θ_a(u_a) = 2π, bracketed by doubling steps from the current value (Θ_a is monotone); the bracket
+  // shrinks to round-off. Without a bracket within 10³ (not expected: the limits above straddle 2π for ≥ 3 faces),
+  // u_a is left alone and the global solve does the work.
+  std::vector<int> released;
+  auto solveVertexLocally = [&](int a) {
+    double& ua = metric.u()[a];
+    const double start = ua;
+    const bool increase = angleSumAt(a) > 2 * M_PI;
+    double lo = start, hi = start, step = 1;
+    for (; step <= 1024; step *= 2) {
+      ua = increase ? start + step : start - step;
+      if ((angleSumAt(a) > 2 * M_PI) != increase) break;
+      (increase ? lo : hi) = ua;
+    }
+    if (step > 1024) {
+      ua = start;
+      return;
+    }
+    (increase ? hi : lo) = ua;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * std::max(1.0, std::abs(lo)); ++it) {
+      ua = 0.5 * (lo + hi);
+      (angleSumAt(a) > 2 * M_PI ? lo : hi) = ua;
+    }
+    ua = 0.5 * (lo + hi);
+  };
   const std::vector<double> dist = edgeDistances(referencePenner(input), inf);
   for (int v = 0; v < nV; ++v) metric.u()[v] = v == inf ? 0.0 : -2 * std::log(dist[v]);
   if (!updateStar()) return {false, "the star of the puncture is not simple"};
@@ -444,7 +490,10 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
       for (int a : chosen) {
         int h = m.vertexHalfedge(inf);
         while (m.tip(h) != a) h = m.nextOutgoing(h);
-        if (metric.flipPtolemy(m.edge(h), &log)) changed = true;
+        if (metric.flipPtolemy(m.edge(h), &log)) {
+          changed = true;
+          released.push_back(a);
+        }
       }
     }
     if (!changed) break;
@@ -454,6 +503,12 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
                        " Newton steps" + (solved.stoppedAtDegenerate ? " (stopped at a degenerate face)" : ""));
     if (round > 10 * nV) return {false, "the star of the puncture did not stabilize"};
     if (!updateStar()) return {false, "a star flip made the link of the puncture non-simple"};
+    // A vertex released from the link keeps its Dirichlet value, which is far from its own equation's solution: the
+    // angle sum responds weakly to u there (measured at 10⁵ vertices: the next solve took 7 Newton steps with full
+    // steps, the residual stuck at that vertex, 1.3·10⁻³ → 1.1·10⁻³ in the first three). Solving its own equation
+    // Θ_a(u_a) = 2π with its neighbours fixed first leaves Newton a smooth, nearly solved problem.
+    for (int a : released) solveVertexLocally(a);
+    released.clear();
   }
   for (int f = 0; f < m.nFaces(); ++f)
     if (!frozen[f]) {
@@ -470,18 +525,17 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
 
   // Lay out the plane, translate to the centroid and scale so the median |z| is 1 (a Möbius map of the sphere fixing
   // ∞, absorbed in the scale bookkeeping: lengths × ρ ⇔ u + log ρ, since ℓ = e^{(u_i+u_j)/2} c).
+  // The closing test of layoutFlat is relative to the mean edge length, but the punctured plane spans many orders of
+  // magnitude (spokes ~1/h near the link, ~h far from it) and the unfolding's round-off is relative to the coordinates.
+  // The test below replaces it: every edge of the layout must have its flow length to 10⁻⁶ relative, or to
+  // a = max(10⁻¹⁰, 10 ε sqrt(#V)) of its endpoints' coordinates, ε the flow's stopping tolerance (edges of 10⁻¹² on
+  // CGAL's cow cannot be resolved at coordinates of order 1 and need not be: below, the lengths are taken from the
+  // Penner form and the coordinates only enter through smooth conformal factors). The flow certifies the metric flat
+  // to ε; this test catches a layout gone wrong (layoutFlat: the unfolding is built so that round-off does not grow
+  // across short edges). The embedding is verified on the sphere below.
   IntrinsicTriangulation planarTri = metric.triangulation();
   std::vector<Eigen::Vector2d> z;
   try {
-    // The closing test of layoutFlat is relative to the mean edge length, but the punctured plane spans many orders of
-    // magnitude (spokes ~1/h near the link, ~h far from it) and the unfolding's round-off is relative to the
-    // coordinates, and the unfolding accumulates the flow's angle residual along breadth-first paths of ~sqrt(#V)
-    // triangles (measured closing mismatches of 10⁻⁸–10⁻⁶ at 10⁶ vertices, residual 3·10⁻¹⁰). The test below replaces
-    // it: every edge of the layout must have its flow length to 10⁻⁶ relative, or to a = max(10⁻¹⁰, 10 ε sqrt(#V)) of
-    // its endpoints' coordinates, ε the flow's stopping tolerance (ten times the expected accumulation; edges of 10⁻¹²
-    // on CGAL's cow cannot be resolved at coordinates of order 1 and need not be: below, the lengths are taken from the
-    // Penner form and the coordinates only enter through smooth conformal factors). The flow itself certifies the
-    // metric flat to ε; this test catches a layout gone wrong. The embedding is verified on the sphere below.
     z = layoutFlat(planarTri, std::numeric_limits<double>::infinity(), frozen);
   } catch (const ConvergenceError& e) {
     return {false, e.what()};
@@ -679,21 +733,42 @@ std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, doubl
     p[v] = q;
     placed[v] = 1;
   };
+  // Every halfedge of a laid-out face gets its direction by rotating the direction of the edge the face was reached
+  // across by the face's angles — never from the difference of its endpoints' coordinates. That difference carries
+  // the coordinates' absolute round-off, which on a short edge is a large direction error, and the unfolding carries
+  // it to everything beyond. The punctured plane of the sphere has edges of 10⁻⁵ and of 10² (box, 10⁶ vertices):
+  // unfolded from coordinate differences it closed edges only to 2·10⁻⁴ of the coordinates although every angle sum
+  // was 2π to 3·10⁻¹⁴; long double coordinates gave 2·10⁻⁵ from face 0 and 0.56 from the face with the shortest edges.
+  // With rotated directions the direction errors are sums of the angles' round-off along the path, independent of
+  // the edge lengths: 1.2·10⁻⁹ from face 0, 9·10⁻¹⁰ from that face (measured; the 10⁵-vertex box: 10⁻¹¹ instead of
+  // 1–3·10⁻¹⁰).
+  std::vector<Eigen::Vector2d> dir(m.nHalfedges(), Eigen::Vector2d::Zero());
+  auto rotate = [](const Eigen::Vector2d& d, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return Eigen::Vector2d(c * d.x() - s * d.y(), s * d.x() + c * d.y());
+  };
+  // Face of halfedge h (a → b, direction known), third vertex c to the left of a → b: place c from a and set the
+  // directions of the other two halfedges (c → a and b → c), rotating a → b by the angle at a (counter-clockwise) and
+  // b → a by the angle at b (clockwise).
+  auto layFace = [&](int h) {
+    const int pv = HalfedgeMesh::prev(h), nx = HalfedgeMesh::next(h);
+    const Eigen::Vector2d ac = rotate(dir[h], cornerAngle(tri, h));
+    place(m.tail(pv), p[m.tail(h)] + tri.length(pv) * ac);
+    dir[pv] = -ac;
+    dir[nx] = rotate(-dir[h], -cornerAngle(tri, nx));
+  };
   std::vector<int> queue;
   for (int seed = 0; seed < m.nFaces(); ++seed) {
     if (done[seed] || skip(seed)) continue;
     // Place the seed face with its first edge on the x-axis.
     const int h = 3 * seed;
-    const int a = m.tail(h), b = m.tip(h), c = m.tail(HalfedgeMesh::prev(h));
+    const int a = m.tail(h), b = m.tip(h);
     if (!placed[a] && !placed[b]) {
       place(a, Eigen::Vector2d(0, 0));
       place(b, Eigen::Vector2d(tri.length(h), 0));
     }
-    const double theta = cornerAngle(tri, h);
-    const Eigen::Vector2d dir = (p[b] - p[a]).normalized();
-    place(c, p[a] + tri.length(HalfedgeMesh::prev(h)) *
-                        Eigen::Vector2d(std::cos(theta) * dir.x() - std::sin(theta) * dir.y(),
-                                        std::sin(theta) * dir.x() + std::cos(theta) * dir.y()));
+    dir[h] = (p[b] - p[a]).normalized();
+    layFace(h);
     done[seed] = 1;
     queue.assign(1, seed);
     for (std::size_t qi = 0; qi < queue.size(); ++qi) {
@@ -703,13 +778,9 @@ std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, doubl
         if (t == kInvalid) continue;
         const int g = HalfedgeMesh::face(t);
         if (done[g] || skip(g)) continue;
-        // In g, t runs from a to b (both placed: they are f's vertices); the third vertex lies to the left of a→b.
-        const int ga = m.tail(t), gb = m.tip(t), gc = m.tail(HalfedgeMesh::prev(t));
-        const double th = cornerAngle(tri, t);
-        const Eigen::Vector2d d = (p[gb] - p[ga]).normalized();
-        place(gc,
-              p[ga] + tri.length(HalfedgeMesh::prev(t)) * Eigen::Vector2d(std::cos(th) * d.x() - std::sin(th) * d.y(),
-                                                                          std::sin(th) * d.x() + std::cos(th) * d.y()));
+        // In g, t runs from a to b (both placed: they are f's vertices), opposite to f's halfedge.
+        dir[t] = -dir[3 * f + k];
+        layFace(t);
         done[g] = 1;
         queue.push_back(g);
       }

@@ -87,7 +87,8 @@ struct Uniformization {
 Uniformization uniformize(const IntrinsicTriangulation& input, const UniformizationOptions& options = {});
 
 // Lays out a flat (Euclidean) triangulation of a topological disk or a planar domain in the plane by breadth-first
-// unfolding from face 0, placing each new vertex by the law of cosines from its face's first placed edge. Throws
+// unfolding from face 0, placing each new vertex from its face's first placed edge by the angle there; edge directions
+// are carried along by rotation, not recomputed from coordinates (round-off would grow across short edges). Throws
 // InputError when the surface is not Euclidean, and ConvergenceError when a vertex reached twice lands more than
 // `mismatch` (relative to the mean edge length) away from itself — i.e. the metric is not flat or has holonomy.
 std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, double mismatch = 1e-6,
