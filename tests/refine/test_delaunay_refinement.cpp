@@ -30,6 +30,26 @@ std::function<double(const RefineResult&)> locatedError(const Surface& s) {
   return [&s](const RefineResult& r) { return worstLocatedLengthError(s, r.triangulation, r.locations); };
 }
 
+// One input of each geometry for the tests of refinement options (frontal placement, smoothing): the planar disk
+// (uniform or graded), the sphere, the hyperbolic genus-2 octagon and a skewed flat torus. A case's `located` checks
+// the recorded input locations against the surface's closed-form distances (none for the octagon).
+struct GeometryCase {
+  const IntrinsicTriangulation* in;
+  double eps;
+  bool graded;
+  std::function<double(const RefineResult&)> located;
+};
+struct EveryGeometry {
+  DiskSurface d = disk(3);
+  SphereSurface sph = sphere(1);
+  OctagonSurface oct = genus2Octagon();
+  FlatTorus torus = flatTorus({1, 0}, {0.37, 0.61}, 5);
+  GeometryCase diskCase(double eps, bool graded) const { return {&d.tri, eps, graded, locatedError(d)}; }
+  GeometryCase sphereCase(double eps) const { return {&sph.tri, eps, false, locatedError(sph)}; }
+  GeometryCase octagonCase(double eps) const { return {&oct.tri, eps, false, nullptr}; }
+  GeometryCase torusCase(double eps) const { return {&torus.tri, eps, false, locatedError(torus)}; }
+};
+
 // The graded disk of the tests: λ = 1.5·x at the input vertices (linear, so its interpolant is exact). Returns min λ.
 double gradeLinearly(const DiskSurface& d, RefineOptions& o) {
   double lambdaMin = 0;
@@ -536,27 +556,16 @@ TEST_CASE("frontal placement (Rebay) meets the same bounds in every geometry, wi
   // Frontal points are not circumcentres: they lie on the bisector of a front edge, inside the bad triangle's empty
   // circumdisk. The bounds, Delaunay, Gauss–Bonnet and signposts must hold as for circumcentres, and every vertex's
   // recorded input location must reproduce the lengths of its edges (disk: plane positions; sphere: great circles).
-  const DiskSurface d = disk(3);
-  const SphereSurface sph = sphere(1);
-  const OctagonSurface oct = genus2Octagon();
-  const FlatTorus torus = flatTorus({1, 0}, {0.37, 0.61}, 5);
-  // `located` checks the recorded input locations against the surface's closed-form distances (none for the octagon).
-  struct Case {
-    const IntrinsicTriangulation* in;
-    double eps;
-    bool graded;
-    std::function<double(const RefineResult&)> located;
-  };
+  const EveryGeometry g;
   // The ε are chosen so that proper frontal points occur (measured: 3 to a few hundred per run); on a coarse input
   // refined only a little none may (no triangle is far enough above its target next to a good one), and then the
   // option only changes the order in which bad triangles are served.
-  for (const Case& c : {Case{&d.tri, 0.05, false, locatedError(d)}, Case{&d.tri, 0.15, true, locatedError(d)},
-                        Case{&sph.tri, 0.05, false, locatedError(sph)}, Case{&oct.tri, 0.15, false, nullptr},
-                        Case{&torus.tri, 0.04, false, locatedError(torus)}}) {
+  for (const GeometryCase& c :
+       {g.diskCase(0.05, false), g.diskCase(0.15, true), g.sphereCase(0.05), g.octagonCase(0.15), g.torusCase(0.04)}) {
     RefineOptions o;
     o.epsilon = c.eps;
     o.frontal = true;
-    const double lambdaMin = c.graded ? gradeLinearly(d, o) : 0;
+    const double lambdaMin = c.graded ? gradeLinearly(g.d, o) : 0;
     INFO(intrinsic::toString(c.in->background) << (c.graded ? " graded" : " uniform") << ", eps " << c.eps);
     const RefineResult r = refineDelaunay(*c.in, o);
     checkBounds(*c.in, r, c.eps * std::exp(-lambdaMin), std::sqrt(2.0));
@@ -571,22 +580,11 @@ TEST_CASE("smoothing passes keep the bounds, Delaunay and the input locations, a
   // edge length (disk: plane positions, sphere: great circles), and on the graded disk (λ = 1.5x, linear, so its
   // interpolant is exact) every circumradius must stay below ε·e^(−λ) at the circumcentre, computed from the
   // located points.
-  const DiskSurface d = disk(3);
-  const SphereSurface sph = sphere(1);
-  const OctagonSurface oct = genus2Octagon();
-  const FlatTorus torus = flatTorus({1, 0}, {0.37, 0.61}, 5);
-  // `located` checks the recorded input locations against the surface's closed-form distances (none for the octagon).
-  struct Case {
-    const IntrinsicTriangulation* in;
-    double eps;
-    bool graded;
-    std::function<double(const RefineResult&)> located;
-  };
-  for (const Case& c : {Case{&d.tri, 0.08, true, locatedError(d)}, Case{&sph.tri, 0.05, false, locatedError(sph)},
-                        Case{&oct.tri, 0.15, false, nullptr}, Case{&torus.tri, 0.03, false, locatedError(torus)}}) {
+  const EveryGeometry g;
+  for (const GeometryCase& c : {g.diskCase(0.08, true), g.sphereCase(0.05), g.octagonCase(0.15), g.torusCase(0.03)}) {
     RefineOptions o;
     o.epsilon = c.eps;
-    const double lambdaMin = c.graded ? gradeLinearly(d, o) : 0;
+    const double lambdaMin = c.graded ? gradeLinearly(g.d, o) : 0;
     INFO(intrinsic::toString(c.in->background) << (c.graded ? " graded" : " uniform") << ", eps " << c.eps);
     const RefineResult plain = refineDelaunay(*c.in, o);
     o.smoothingPasses = 3;
@@ -604,7 +602,7 @@ TEST_CASE("smoothing passes keep the bounds, Delaunay and the input locations, a
       double worstRatio = 0;
       for (int f = 0; f < m.nFaces(); ++f) {
         Eigen::Vector2d p[3];
-        for (int k = 0; k < 3; ++k) p[k] = d.locate(r.locations[m.faceVertex(f, k)]);
+        for (int k = 0; k < 3; ++k) p[k] = g.d.locate(r.locations[m.faceVertex(f, k)]);
         const Eigen::Vector2d u = p[1] - p[0], v = p[2] - p[0];
         const double det = 2 * (u.x() * v.y() - u.y() * v.x());
         const Eigen::Vector2d cc = p[0] + Eigen::Vector2d(v.y() * u.squaredNorm() - u.y() * v.squaredNorm(),
