@@ -39,7 +39,8 @@ struct EmbeddingOptions {
   // smallest weight that kept every ellipsoid mesh tried (640–5700 vertices, MDS start) free of popped vertices; 0.01
   // let some through. 0 skips the first solve. The first solve takes inexact LM steps (CGNR, Jacobi-preconditioned
   // conjugate gradients: it only has to reach the right basin, and its normal equations couple 2-rings, which makes
-  // exact factorization ~8× dearer); the second takes exact ones (SPARSE_NORMAL_CHOLESKY) to converge to round-off.
+  // exact factorization ~8× dearer); the second takes exact ones (SPARSE_NORMAL_CHOLESKY, nested-dissection order) to
+  // converge to round-off.
   double regularizerWeight = 0.1;
   int maxIterationsRegularized = 100;
   int maxIterations = 200;
@@ -58,8 +59,9 @@ struct EmbeddingResult {
   double tolerance = 0;
   std::string verdict;  // "isometric to tolerance T (…)" or "not isometric: residual R cannot be removed (…)"
   std::string start;    // "initial positions" or "landmark MDS (k landmarks)"
-  int regularizedIterations = 0, iterations = 0;  // LM iterations of the two solves
-  double startSeconds = 0, fitSeconds = 0;
+  int regularizedIterations = 0, iterations = 0;    // LM iterations of the two solves
+  double startSeconds = 0, fitSeconds = 0;          // wall time of the start and of both solves
+  double regularizedSeconds = 0, finalSeconds = 0;  // fitSeconds split by solve
 };
 
 // Fits positions to `mesh`'s edge lengths. Throws InputError (naming the element) for: a non-Euclidean background, a
