@@ -38,7 +38,8 @@ struct EmbeddingOptions {
   // O(ε·κ). The second solve drops it (w = 0) so that the final positions answer to the lengths alone. On ellipsoid
   // meshes of 640–5700 vertices 0.01 let popped vertices through, 0.1 and 1 did not. The default is 1 because the
   // regularizer must also stiffen the smooth bending modes, which the edge lengths of a fine mesh barely constrain:
-  // their stiffness under the regularizer falls like h² at fixed wavelength, and at 198 812 vertices w = 0.1 let the
+  // for a bending mode of fixed wavelength its energy does not depend on h while the edge terms' grows like 1/h²
+  // (their number), so its relative stiffness falls like h² (w ∝ 1/h keeps it), and at 198 812 vertices w = 0.1 let the
   // first LM steps run off along them (rejected, trust region collapsed, ≈ 0.3 % cost decrease per step thereafter),
   // while w = 1 (and 0.32) took accepted steps from the first; at 20 252 vertices w = 1 needs 7 regularized steps
   // instead of 44 and reaches the same convex realization. 0 skips the first solve. The first solve takes inexact LM
