@@ -4,7 +4,8 @@
 //
 // Charts are rectangles [u0,u1]×[v0,v1], optionally periodic in u and/or v. Sphere- and disk-like surfaces use polar
 // charts (u an angle, periodic; v a colatitude or radius) whose edge v = v0 (and v = v1) is a coordinate pole: one
-// surface point. Nothing downstream ever evaluates at a pole: discretization and quadrature go through the pole-free
+// surface point. Nothing downstream evaluates g at a pole (the default gaussianCurvature takes its limit there, for the
+// output's per-vertex field): discretization and quadrature go through the pole-free
 // reference surface of the chart (the unit sphere or the plane disk, see referencePoint / chartPoint below and
 // docs/metrics.md), so poles cost no accuracy and produce no degenerate triangle fans.
 #pragma once
@@ -71,7 +72,8 @@ class SmoothMetric {
   // ~ ε/h2² ≈ 3e-11). Metrics varying on scales much finer than w (narrow bumps) lose accuracy as (h/scale)⁴.
   virtual MetricJet jet(double u, double v) const;
 
-  // Default: Brioschi's formula on jet(). Families override it with closed forms.
+  // Default: Brioschi's formula on jet(), and within 1e-3·w of a coordinate pole (where Brioschi divides by det g → 0)
+  // its limit at the pole, interpolated (smooth_metric.cpp). Families override it with closed forms.
   virtual double gaussianCurvature(double u, double v) const;
 
   // √det g: the area of the surface is ∫∫ areaElement du dv over the chart.
