@@ -59,6 +59,13 @@ std::unique_ptr<intrinsic::SmoothMetric> loadMetric(const std::string& command, 
   return std::make_unique<intrinsic::SampledMetric>(intrinsic::readSampledField(field));
 }
 
+void addFieldOption(CLI::App* sub, std::string& field) {
+  sub->add_option("--field", field,
+                  "Sampled metric field instead of a family: the text format, or HDF5 (datasets g_uu g_uv g_vv of "
+                  "shape (NV, NU), attributes chart, periodic_u, periodic_v, poles; FILE.h5:/group for a group), "
+                  "docs/metrics.md");
+}
+
 void addCurvatureMeasureProperties(intrinsic::MeshData& data, const intrinsic::CurvatureMeasureResult& c) {
   std::vector<double> error(c.discrete.size());
   for (std::size_t v = 0; v < error.size(); ++v) error[v] = c.discrete[v] - c.smooth[v];

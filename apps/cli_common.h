@@ -34,6 +34,9 @@ intrinsic::MeshData loadMesh(const std::string& path);
 // Parses `--param key=value` arguments into a map; throws InputError naming the argument when it is not key=number.
 std::map<std::string, double> parseParameters(const std::vector<std::string>& args);
 
+// The --field option of discretize, remesh and convergence: a sampled metric field, text or HDF5 (docs/metrics.md §4).
+void addFieldOption(CLI::App* sub, std::string& field);
+
 // The metric a command was given: exactly one of a family name with `--param`s, or a sampled field file. Throws
 // InputError, prefixed with `command`, when both or neither are given.
 std::unique_ptr<intrinsic::SmoothMetric> loadMetric(const std::string& command, const std::string& family,

@@ -211,7 +211,7 @@ void registerConvergenceCommand(CLI::App& app) {
       "their orders against mean circumradius (>= 1, 2, 1: Theorem 3.4, Lemma 4.9) and PREFIX_fig13.png.\n"
       "Example: conformesh convergence kerr-newman --param a=0.95 --vertices 1k,2k,4k,8k -o kerr95");
   sub->add_option("family", a->family, "Metric family (see `conformesh discretize --list`)");
-  sub->add_option("--field", a->field, "Sampled metric field file instead of a family (format: docs/metrics.md)");
+  addFieldOption(sub, a->field);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
   sub->add_option("--vertices", a->vertices, "Target vertex counts, e.g. 1k,2k,4k,8k");
   sub->add_option("--levels", a->levels, "Use the first N counts of the paper's Table 2 (2..11)");

@@ -144,7 +144,7 @@ void registerDiscretizeCommand(CLI::App& app) {
       "  conformesh discretize --field horizon.txt --resolution 16 -o horizon.ply   (format: docs/metrics.md)");
   sub->add_option("family", args->family, "Metric family name (see --list)");
   sub->add_option("--param", args->params, "Family parameter KEY=VALUE (repeatable), e.g. --param a=0.9");
-  sub->add_option("--field", args->field, "Sampled metric field file (text format in docs/metrics.md)");
+  addFieldOption(sub, args->field);
   sub->add_option("-r,--resolution", args->resolution,
                   "Sphere: icosahedral frequency N (10N^2+2 vertices); disk: N rings; grid: N cells across v")
       ->capture_default_str();

@@ -130,7 +130,7 @@ void registerRemeshCommand(CLI::App& app) {
       "Example: conformesh remesh kerr-newman --param a=0.99 --eps 0.05 -o kerr.ply --vtk kerr.vtk");
   sub->add_option("family", a->family,
                   "Metric family (see `conformesh discretize --list`), or a mesh file (.off/.obj/.ply)");
-  sub->add_option("--field", a->field, "Sampled metric field file instead of a family (format: docs/metrics.md)");
+  addFieldOption(sub, a->field);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
   sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric (required)")->required();
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (default sqrt(2): 20.7 deg)");

@@ -9,6 +9,7 @@
 #include <Eigen/SparseLU>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/sampled_field_hdf5.h"
 
 namespace conformesh::intrinsic {
 
@@ -109,9 +110,7 @@ SampledField parseSampledField(const std::string& text, const std::string& sourc
       need(4);
       f.domain.u0 = parseNumber(w[1], where, "U0"), f.domain.u1 = parseNumber(w[2], where, "U1");
       f.domain.v0 = parseNumber(w[3], where, "V0"), f.domain.v1 = parseNumber(w[4], where, "V1");
-      if (!(f.domain.u1 > f.domain.u0) || !(f.domain.v1 > f.domain.v0) || !std::isfinite(f.domain.u1 - f.domain.u0) ||
-          !std::isfinite(f.domain.v1 - f.domain.v0))
-        throw InputError(where + ": chart must have finite U0 < U1 and V0 < V1");
+      checkChartBounds(f.domain, where);
       haveChart = true;
     } else if (key == "grid") {
       need(2);
@@ -163,19 +162,29 @@ SampledField parseSampledField(const std::string& text, const std::string& sourc
     throw InputError(at(source, lineNo) + ": wrong grid shape: 'grid " + std::to_string(f.nu) + " " +
                      std::to_string(f.nv) + "' needs " + std::to_string(f.nu * f.nv) + " data lines, found " +
                      std::to_string(f.guu.size()));
-  if (poles == "both") {
-    f.domain.poleAtV0 = f.domain.poleAtV1 = true;
-    if (!f.domain.periodicU || f.domain.periodicV || f.domain.u0 != 0 || std::abs(f.domain.u1 - 2 * M_PI) > 1e-12 ||
-        f.domain.v0 != 0 || std::abs(f.domain.v1 - M_PI) > 1e-12)
-      throw InputError(source +
-                       ": 'poles both' needs periodic_u yes, periodic_v no and chart 0 2pi 0 pi "
-                       "(to 1e-12)");
-    f.domain.u1 = 2 * M_PI, f.domain.v1 = M_PI;
-  }
+  if (poles == "both") markPoleToPole(f, source);
   return f;
 }
 
+void checkChartBounds(const ChartDomain& d, const std::string& where) {
+  if (!(d.u1 > d.u0) || !(d.v1 > d.v0) || !std::isfinite(d.u1 - d.u0) || !std::isfinite(d.v1 - d.v0))
+    throw InputError(where + ": chart must have finite U0 < U1 and V0 < V1");
+}
+
+void markPoleToPole(SampledField& f, const std::string& where) {
+  ChartDomain& d = f.domain;
+  if (!d.periodicU || d.periodicV || d.u0 != 0 || std::abs(d.u1 - 2 * M_PI) > 1e-12 || d.v0 != 0 ||
+      std::abs(d.v1 - M_PI) > 1e-12)
+    throw InputError(where + ": 'poles both' needs periodic_u yes, periodic_v no and chart 0 2pi 0 pi (to 1e-12)");
+  d.poleAtV0 = d.poleAtV1 = true;
+  d.u1 = 2 * M_PI, d.v1 = M_PI;
+}
+
 SampledField readSampledField(const std::string& path) {
+  // A file with the HDF5 signature (or FILE:/group naming one) is read as HDF5, whatever its extension.
+  if (isHdf5File(path) ||
+      (!std::ifstream(path) && path.rfind(':') != std::string::npos && isHdf5File(path.substr(0, path.rfind(':')))))
+    return readSampledFieldHdf5(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the metric field file");
   std::ostringstream s;

@@ -1,6 +1,6 @@
 // End-to-end tests of `conformesh discretize`: --list, a family with parameters written to PLY and read back (chart
-// coordinates u, v per vertex, edge lengths, the metric named in the comments), a sampled field, and one-line errors
-// naming the family, the parameter or the field file's line.
+// coordinates u, v per vertex, edge lengths, the metric named in the comments), sampled fields (text and HDF5), and
+// one-line errors naming the family, the parameter or the field file's line.
 #include <catch2/catch.hpp>
 
 #include "../support/cli_runner.h"
@@ -17,6 +17,7 @@
 
 #include "conformesh/intrinsic/mesh_io.h"
 #include "conformesh/intrinsic/metric_families.h"
+#include "conformesh/intrinsic/sampled_field_hdf5.h"
 #include "conformesh/intrinsic/sampled_metric.h"
 
 namespace fs = std::filesystem;
@@ -27,9 +28,13 @@ namespace {
 using Run = conformesh::testing::CliRun;
 using conformesh::testing::slurp;
 
-fs::path dir() { return conformesh::testing::scratchDir(); }
+fs::path dir() {
+  return conformesh::testing::scratchDir();
+}
 
-Run runCli(const std::string& args) { return conformesh::testing::runConformesh(args); }
+Run runCli(const std::string& args) {
+  return conformesh::testing::runConformesh(args);
+}
 
 }  // namespace
 
@@ -74,6 +79,21 @@ TEST_CASE("discretize --field: a sampled metric file") {
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["euler_characteristic"] == 0);
   CHECK(j["smooth_area"].get<double>() == Approx(12 * M_PI * M_PI).epsilon(1e-4));
+}
+
+TEST_CASE("discretize --field: an HDF5 field in a group, and a broken one named") {
+  const fs::path field = dir() / "torus_field.h5";
+  writeSampledFieldHdf5(sampleMetric(TorusMetric(3, 1), 24, 16), field.string(), "/surfaces/torus");
+  const fs::path out = dir() / "torus_h5.ply";
+  Run r = runCli("-q discretize --field " + field.string() + ":/surfaces/torus -r 6 -o " + out.string() + " --json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["euler_characteristic"] == 0);
+  CHECK(j["smooth_area"].get<double>() == Approx(12 * M_PI * M_PI).epsilon(1e-4));
+  r = runCli("discretize --field " + field.string() + " -r 6 -o " + out.string());  // the root holds no field
+  CHECK(r.status == 1);
+  CHECK(r.err.find(field.string() + ": missing attribute 'chart'") != std::string::npos);
 }
 
 TEST_CASE("discretize errors: one line naming the family, parameter or file line") {

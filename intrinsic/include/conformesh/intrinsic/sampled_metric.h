@@ -44,7 +44,14 @@ struct SampledField {
 
 // Parses the text format; throws InputError "SOURCE:LINE: ..." on any problem.
 SampledField parseSampledField(const std::string& text, const std::string& source);
+// Reads a field file: the text format, or HDF5 (sampled_field_hdf5.h) when the file starts with HDF5's signature;
+// `path:/group` names a field in a group of an HDF5 file.
 SampledField readSampledField(const std::string& path);
+// Checks shared by the readers: finite U0 < U1 and V0 < V1; and, for 'poles both', the sphere chart (periodic u,
+// chart 0 2π 0 π to 1e-12), after which the field is marked pole-to-pole with the chart's ends set to 2π and π exactly.
+// Both throw InputError prefixed by `where`.
+void checkChartBounds(const ChartDomain& domain, const std::string& where);
+void markPoleToPole(SampledField& field, const std::string& where);
 // The text format (17 significant digits), e.g. to hand a sampled analytic metric to `conformesh discretize --field`.
 std::string formatSampledField(const SampledField& field);
 // Samples `metric` on the grid of the given shape (pole-to-pole when the metric's chart is a sphere chart).
