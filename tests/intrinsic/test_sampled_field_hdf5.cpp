@@ -299,33 +299,20 @@ TEST_CASE("bad HDF5 fields: an InputError naming the file, group and object") {
   f = good;
   f.guv[5] = 10;  // g_uu g_vv − g_uv² < 0 at node (5, 0)
   expect(f, "grid node (5, 0)");
-  f = good;
-  f.skip = {"g_uu"};
-  f.extra = [](hid_t g) {
-    const hsize_t n = 64;
-    const hid_t s = H5Screate_simple(1, &n, nullptr);
-    const hid_t d = H5Dcreate2(g, "g_uu", H5T_IEEE_F64LE, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    H5Dclose(d), H5Sclose(s);
+  // A dataset replaced by an empty one of another rank, shape or type.
+  auto replaced = [&](const char* name, std::vector<hsize_t> dims, hid_t type) {
+    RawField r = good;
+    r.skip = {name};
+    r.extra = [name, dims, type](hid_t g) {
+      const hid_t s = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr);
+      H5Dclose(H5Dcreate2(g, name, type, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+      H5Sclose(s);
+    };
+    return r;
   };
-  expect(f, "dataset 'g_uu' must be 2-D with shape (NV, NU), found rank 1");
-  f = good;
-  f.skip = {"g_uv"};
-  f.extra = [](hid_t g) {
-    const hsize_t dims[2] = {8, 7};
-    const hid_t s = H5Screate_simple(2, dims, nullptr);
-    const hid_t d = H5Dcreate2(g, "g_uv", H5T_IEEE_F64LE, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    H5Dclose(d), H5Sclose(s);
-  };
-  expect(f, "datasets g_uu and g_uv differ in shape: (8, 8) and (8, 7)");
-  f = good;
-  f.skip = {"g_vv"};
-  f.extra = [](hid_t g) {
-    const hsize_t dims[2] = {8, 8};
-    const hid_t s = H5Screate_simple(2, dims, nullptr);
-    const hid_t d = H5Dcreate2(g, "g_vv", H5T_STD_I32LE, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    H5Dclose(d), H5Sclose(s);
-  };
-  expect(f, "dataset 'g_vv' must hold floating-point numbers, found integer");
+  expect(replaced("g_uu", {64}, H5T_IEEE_F64LE), "dataset 'g_uu' must be 2-D with shape (NV, NU), found rank 1");
+  expect(replaced("g_uv", {8, 7}, H5T_IEEE_F64LE), "datasets g_uu and g_uv differ in shape: (8, 8) and (8, 7)");
+  expect(replaced("g_vv", {8, 8}, H5T_STD_I32LE), "dataset 'g_vv' must hold floating-point numbers, found integer");
 
   // A group that is not there; a file cut short; the wrong file in an .h5 name.
   writeRaw(good, path);
