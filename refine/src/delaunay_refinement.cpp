@@ -964,6 +964,12 @@ void Refiner::drain() {
 
 }  // namespace
 
+SegmentRule parseSegmentRule(const std::string& name) {
+  if (name == "ruppert") return SegmentRule::Ruppert;
+  if (name == "chew") return SegmentRule::Chew;
+  throw InputError("segment rule '" + name + "' is not one of: ruppert, chew");
+}
+
 RefineResult refineDelaunay(const IntrinsicTriangulation& input, const RefineOptions& options) {
   Refiner refiner(input, options);
   return refiner.run();

@@ -16,11 +16,14 @@
 // a boundary edge is not inserted; the edge is split instead (Ruppert 1995). For loops that are not cocircular, and in
 // curved backgrounds, boundary edges are split at their geodesic midpoint. At boundary corners below 60° segments are
 // split on concentric shells and the shape test is waived for the corner's triangles (their size is still enforced),
-// so that refinement does not cascade into the corner. docs/refinement.md states what is guaranteed.
+// so that refinement does not cascade into the corner. With SegmentRule::Chew the boundary rules are Chew's second
+// algorithm instead (constrained Delaunay; free vertices deleted from a split segment's diametral disk,
+// vertex_removal.h). docs/refinement.md states what is guaranteed.
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "conformesh/intrinsic/intrinsic_triangulation.h"
@@ -50,6 +53,9 @@ enum class SegmentRule {
   Chew,
 };
 
+// "ruppert" / "chew"; InputError naming the accepted values otherwise.
+SegmentRule parseSegmentRule(const std::string& name);
+
 struct RefineProgress {
   std::int64_t insertions = 0;
   int vertices = 0;
@@ -60,8 +66,9 @@ struct RefineOptions {
   // Size bound ε > 0: circumradii end at most ε·e^(−λ) in the background metric.
   double epsilon = 0;
   // Shape bound B = circumradius / shortest edge. √2 is Ruppert's bound (smallest angle ≥ arcsin(1/(2√2)) ≈ 20.7°),
-  // guaranteed to terminate with boundaries whose corners are ≥ 60°; on closed surfaces every B ≥ 1 terminates
-  // (smallest angle ≥ 30° at B = 1). Values below 1 are rejected.
+  // guaranteed to terminate with boundaries whose corners are ≥ 60°; with SegmentRule::Chew, B ≥ √5/2 (Shewchuk, convex
+  // planar domains); on closed surfaces every B ≥ 1 terminates (smallest angle ≥ 30° at B = 1). Values below 1 are
+  // rejected.
   double ratioBound = 1.4142135623730951;
   // Conformal factor λ per INPUT vertex, interpolated at circumcentres; empty means λ ≡ 0 (uniform refinement).
   std::vector<double> lambda;
