@@ -391,49 +391,53 @@ TEST_CASE("off-centres meet the same bounds as circumcentres, with no more verti
 TEST_CASE("sharp boundary corners (7.5° hyperbolic, 11.5° Euclidean) terminate: concentric shells and a terminator") {
   // Single triangles: hyperbolic with sides 5, 3, 3 (angles 74.3°, 7.47°, 7.47°; no circumcircle, since
   // sinh(5/2) > 2 sinh(3/2)) and Euclidean with sides 1, 1, 0.2 (apex 11.5°). Below 60° Ruppert's rules alone need not
-  // terminate; with concentric-shell segment splits and the shape test waived at the sharp corners they do. Every
-  // triangle meets the size bound; every triangle away from the sharp corners meets the shape bound too.
+  // terminate; with concentric-shell segment splits and the shape test waived at the sharp corners they do, with
+  // Ruppert's and with Chew's segment rule (measured: 39 / 69 deletions). Every triangle meets the size bound; every
+  // triangle away from the sharp corners meets the shape bound too.
   struct Case {
     intrinsic::Background g;
     double a, b, eps;
   };
-  for (const Case& c :
-       {Case{intrinsic::Background::Hyperbolic, 5, 3, 0.2}, Case{intrinsic::Background::Euclidean, 0.2, 1, 0.03}}) {
-    IntrinsicTriangulation in;
-    in.mesh = intrinsic::HalfedgeMesh::fromFaces({{0, 1, 2}}, 3);
-    in.background = c.g;
-    in.edgeLengths.assign(3, c.b);
-    for (int e = 0; e < 3; ++e) {
-      const int h = in.mesh.edgeHalfedge(e);
-      if (std::min(in.mesh.tail(h), in.mesh.tip(h)) == 1) in.edgeLengths[e] = c.a;  // the edge 1-2, opposite vertex 0
-    }
-    if (c.g == intrinsic::Background::Hyperbolic) REQUIRE(std::isinf(intrinsic::faceCircumradius(in, 0)));
-    const std::vector<double> sums = intrinsic::angleSums(in);
-    RefineOptions o;
-    o.epsilon = c.eps;
-    const RefineResult r = refineDelaunay(in, o);
-    const IntrinsicTriangulation& t = r.triangulation;
-    const auto& m = t.mesh;
-    double worstRatio = 0, maxR = 0;
-    for (int f = 0; f < m.nFaces(); ++f) {
-      const double R = intrinsic::faceCircumradius(t, f);
-      maxR = std::max(maxR, R);
-      bool sharp = false;
-      for (int k = 0; k < 3; ++k) {
-        const int v = m.faceVertex(f, k);
-        sharp = sharp || (v < 3 && sums[v] < M_PI / 3);
+  for (SegmentRule rule : {SegmentRule::Ruppert, SegmentRule::Chew})
+    for (const Case& c :
+         {Case{intrinsic::Background::Hyperbolic, 5, 3, 0.2}, Case{intrinsic::Background::Euclidean, 0.2, 1, 0.03}}) {
+      IntrinsicTriangulation in;
+      in.mesh = intrinsic::HalfedgeMesh::fromFaces({{0, 1, 2}}, 3);
+      in.background = c.g;
+      in.edgeLengths.assign(3, c.b);
+      for (int e = 0; e < 3; ++e) {
+        const int h = in.mesh.edgeHalfedge(e);
+        if (std::min(in.mesh.tail(h), in.mesh.tip(h)) == 1) in.edgeLengths[e] = c.a;  // the edge 1-2, opposite vertex 0
       }
-      if (sharp) continue;
-      const double shortest = std::min({t.length(3 * f), t.length(3 * f + 1), t.length(3 * f + 2)});
-      worstRatio = std::max(worstRatio, R / shortest);
+      if (c.g == intrinsic::Background::Hyperbolic) REQUIRE(std::isinf(intrinsic::faceCircumradius(in, 0)));
+      const std::vector<double> sums = intrinsic::angleSums(in);
+      RefineOptions o;
+      o.epsilon = c.eps;
+      o.segmentRule = rule;
+      const RefineResult r = refineDelaunay(in, o);
+      const IntrinsicTriangulation& t = r.triangulation;
+      const auto& m = t.mesh;
+      double worstRatio = 0, maxR = 0;
+      for (int f = 0; f < m.nFaces(); ++f) {
+        const double R = intrinsic::faceCircumradius(t, f);
+        maxR = std::max(maxR, R);
+        bool sharp = false;
+        for (int k = 0; k < 3; ++k) {
+          const int v = m.faceVertex(f, k);
+          sharp = sharp || (v < 3 && sums[v] < M_PI / 3);
+        }
+        if (sharp) continue;
+        const double shortest = std::min({t.length(3 * f), t.length(3 * f + 1), t.length(3 * f + 2)});
+        worstRatio = std::max(worstRatio, R / shortest);
+      }
+      INFO("background " << intrinsic::toString(c.g) << (rule == SegmentRule::Chew ? ", Chew" : ", Ruppert")
+                         << ", vertices " << m.nVertices());
+      CHECK(maxR <= c.eps * (1 + 1e-9));
+      CHECK(worstRatio <= std::sqrt(2.0) * (1 + 1e-9));
+      CHECK(intrinsic::countNonDelaunayEdges(t) == 0);
+      CHECK(std::abs(intrinsic::curvatureTotals(t).gaussBonnetResidual) < 1e-9);
+      CHECK(intrinsic::totalArea(t) == Approx(intrinsic::totalArea(in)).epsilon(1e-11));
     }
-    INFO("background " << intrinsic::toString(c.g) << ", vertices " << m.nVertices());
-    CHECK(maxR <= c.eps * (1 + 1e-9));
-    CHECK(worstRatio <= std::sqrt(2.0) * (1 + 1e-9));
-    CHECK(intrinsic::countNonDelaunayEdges(t) == 0);
-    CHECK(std::abs(intrinsic::curvatureTotals(t).gaussBonnetResidual) < 1e-9);
-    CHECK(intrinsic::totalArea(t) == Approx(intrinsic::totalArea(in)).epsilon(1e-11));
-  }
 }
 
 TEST_CASE("a circle domain (annulus): boundary vertices land on both circles, the hole's split into the domain") {
