@@ -26,6 +26,7 @@ struct RefineArgs {
   double ratio = 1.4142135623730951;
   bool uniform = false, json = false, ascii = false, offCenters = false;
   std::string boundary = "auto";
+  std::string segmentRule = "ruppert";
   std::int64_t maxInsertions = 50'000'000;
   int smoothing = refine::RefineOptions{}.smoothingPasses;
   std::string smoothingRule = "odt";
@@ -41,6 +42,7 @@ void run(const RefineArgs& args) {
   opt.ratioBound = args.ratio;
   opt.maxInsertions = args.maxInsertions;
   opt.offCenters = args.offCenters;
+  opt.segmentRule = refine::parseSegmentRule(args.segmentRule);
   opt.smoothingPasses = args.smoothing;
   opt.smoothingRule = refine::parseSmoothingRule(args.smoothingRule);
   opt.boundarySplit = args.boundary == "circle"     ? refine::BoundarySplit::Circle
@@ -116,6 +118,9 @@ void run(const RefineArgs& args) {
                  {"off_center_insertions", s.offCenterInsertions},
                  {"boundary_splits", s.boundarySplits},
                  {"rejected_circumcenters", s.rejectedCircumcenters},
+                 {"segment_rule", args.segmentRule},
+                 {"deleted_vertices", s.deletedVertices},
+                 {"refused_deletions", s.refusedDeletions},
                  {"flips", s.flips},
                  {"trace_steps", s.traceSteps},
                  {"boundary_loops", s.boundaryLoops},
@@ -134,6 +139,9 @@ void run(const RefineArgs& args) {
             << " off-centres, " << s.centroidInsertions << " centroids, " << s.boundarySplits << " boundary splits ("
             << s.circleLoops << " of " << s.boundaryLoops << " boundary loops on their circle); " << s.flips
             << " flips\n";
+  if (opt.segmentRule == refine::SegmentRule::Chew)
+    std::cout << "  Chew's rule: " << s.deletedVertices << " free vertices deleted from diametral disks ("
+              << s.refusedDeletions << " refused)\n";
   if (args.smoothing > 0)
     std::cout << "  smoothing: " << args.smoothing << " passes, " << s.smoothingMoves << " vertex moves ("
               << s.smoothingRefused << " refused), " << s.insertionsAfterSmoothing << " insertions after smoothing\n";
@@ -179,6 +187,13 @@ void registerRefineCommand(CLI::App& app) {
                   "How boundary edges are split: auto (on the circle if the loop is cocircular, else at the geodesic "
                   "midpoint), circle (error if a loop is not a circle), geodesic")
       ->check(CLI::IsMember({"auto", "circle", "geodesic"}));
+  sub->add_option(
+         "--segment-rule", args->segmentRule,
+         "Boundary segments: 'ruppert' (default; split when encroached, conforming Delaunay, termination proved for "
+         "B >= sqrt 2) or 'chew' (Chew's second algorithm: constrained Delaunay, a segment is split only for "
+         "a circumcentre beyond it, deleting the inserted interior vertices in its diametral disk first; "
+         "proved in the plane for B >= sqrt(5)/2 = 1.118, 26.57 deg; docs/refinement.md §6)")
+      ->check(CLI::IsMember({"ruppert", "chew"}));
   sub->add_flag("--off-centers", args->offCenters,
                 "Split bad-shaped triangles at Üngör's off-centre instead of the circumcentre when nearer (Euclidean "
                 "background; same bounds, usually fewer vertices when grading drives the refinement)");

@@ -35,12 +35,13 @@ struct RemeshArgs {
   int smoothing = refine::RemeshOptions{}.refinement.smoothingPasses;
   std::string smoothingRule = "odt";
   std::string refineIn = "uniformized";
+  std::string segmentRule = "ruppert";
 };
 
 void run(const RemeshArgs& a) {
   if (isMeshFilePath(a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh.h)
     return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
-                          a.refineIn, a.smoothing, a.smoothingRule});
+                          a.refineIn, a.smoothing, a.smoothingRule, a.segmentRule});
   if (a.refineIn != "uniformized")
     throw InputError("remesh: --refine-in " + a.refineIn +
                      " applies to mesh files; a smooth metric is refined uniformized");
@@ -53,6 +54,7 @@ void run(const RemeshArgs& a) {
   o.diskTarget = refine::parseDiskTarget(a.diskTarget);
   o.refinement.smoothingPasses = a.smoothing;
   o.refinement.smoothingRule = refine::parseSmoothingRule(a.smoothingRule);
+  o.refinement.segmentRule = refine::parseSegmentRule(a.segmentRule);
   o.progress = [](const std::string& s) { progress(s); };
   const refine::RemeshResult r = refine::remeshMetric(*metric, o);
   intrinsic::MeshData data = refine::toMeshData(r, *metric, a.epsilon);
@@ -61,6 +63,7 @@ void run(const RemeshArgs& a) {
                       {"eps", a.epsilon},
                       {"ratio_bound", a.ratio},
                       {"smoothing_passes", a.smoothing},
+                      {"segment_rule", a.segmentRule},
                       {"t0", {{"vertices", r.t0Vertices}, {"faces", r.t0Faces}}},
                       {"uniformization", uniformizationJson(r.uniformization)},
                       {"disk_target", refine::toString(r.diskTarget)},
@@ -142,6 +145,13 @@ void registerRemeshCommand(CLI::App& app) {
                   "(corners keep their angles, lambda = 0 on the boundary); 'auto' (default) keeps the boundary of "
                   "rectangle charts, which have corners")
       ->check(CLI::IsMember({"auto", "circle", "keep-boundary"}));
+  sub->add_option(
+         "--segment-rule", a->segmentRule,
+         "Boundary segments: 'ruppert' (default; split when encroached, conforming Delaunay, termination proved for "
+         "B >= sqrt 2) or 'chew' (Chew's second algorithm: constrained Delaunay, a segment is split only for "
+         "a circumcentre beyond it, deleting the inserted interior vertices in its diametral disk first; "
+         "proved in the plane for B >= sqrt(5)/2 = 1.118, 26.57 deg; docs/refinement.md §6)")
+      ->check(CLI::IsMember({"ruppert", "chew"}));
   sub->add_option("-o,--output", a->output, "Output PLY (edge lengths, vertex fields)")->required();
   sub->add_option("--vtk", a->vtk, "Also write legacy VTK for ParaView");
   sub->add_flag("--json", a->json, "Print the report as JSON");

@@ -41,6 +41,7 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
         "is refined unsmoothed (smoothing would act in the uniformized metric, not the input's)");
   o.refinement.smoothingPasses = a.smoothing;
   o.refinement.smoothingRule = refine::parseSmoothingRule(a.smoothingRule);
+  o.refinement.segmentRule = refine::parseSegmentRule(a.segmentRule);
   o.progress = [](const std::string& s) { progress(s); };
   const refine::MeshRemeshResult r = refine::remeshMesh(in.triangulation, in.positions, o);
   intrinsic::MeshData data = refine::toMeshData(r, in.source, a.epsilon);
@@ -51,6 +52,7 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
       {"ratio_bound", a.ratio},
       {"refine_in", refine::toString(r.refinedIn)},
       {"smoothing_passes", o.refinement.smoothingPasses},
+      {"segment_rule", a.segmentRule},
       {"input_mesh",
        {{"vertices", r.inputVertices}, {"faces", r.inputFaces}, {"area", intrinsic::totalArea(in.triangulation)}}},
       {"refinement", refineStatisticsJson(r.refinement)},

@@ -21,6 +21,7 @@ struct MeshRemeshCliArgs {
   std::string refineIn = "uniformized";  // refine::parseRefineMetric
   int smoothing = 0;                     // smoothing passes, input route only (the uniformized route is unsmoothed)
   std::string smoothingRule = "odt";     // refine::parseSmoothingRule
+  std::string segmentRule = "ruppert";   // refine::parseSegmentRule
 };
 
 void runRemeshMesh(const MeshRemeshCliArgs& args);

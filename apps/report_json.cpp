@@ -37,6 +37,8 @@ nlohmann::json refineStatisticsJson(const refine::RefineStatistics& s) {
           {"centroid_insertions", s.centroidInsertions},
           {"boundary_splits", s.boundarySplits},
           {"rejected_circumcenters", s.rejectedCircumcenters},
+          {"deleted_vertices", s.deletedVertices},
+          {"refused_deletions", s.refusedDeletions},
           {"flips", s.flips},
           {"trace_steps", s.traceSteps}};
 }

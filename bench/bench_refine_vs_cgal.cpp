@@ -14,6 +14,7 @@
 //   build-bench/bench/bench_refine_vs_cgal --table            # the table of docs/benchmarks.md
 //   build-bench/bench/bench_refine_vs_cgal --scaling          # conformesh alone, 10k .. 1M vertices
 //   build-bench/bench/bench_refine_vs_cgal --compare20k 7     # alternating rounds at 20k, minimum per tool
+//   build-bench/bench/bench_refine_vs_cgal --below-sqrt2 1.12 # Ruppert's and Chew's rule, and CGAL, at B = 1.12
 //   build-bench/bench/bench_refine_vs_cgal                    # Google Benchmark timings at 20k vertices
 #include <benchmark/benchmark.h>
 
@@ -47,7 +48,8 @@
 namespace {
 
 constexpr int kPolygon = 64;
-constexpr double kB = 1.4142135623730951;
+// The shape bound: √2 for the main table, below it for --below-sqrt2 (passed on to the child processes).
+double gB = 1.4142135623730951;
 constexpr double kDeg = 180 / M_PI;
 
 // CPU time of this process in seconds.
@@ -72,11 +74,12 @@ conformesh::intrinsic::IntrinsicTriangulation diskPolygon() {
   return conformesh::intrinsic::toTriangulation(d);
 }
 
-Outcome runConformesh(double eps) {
+Outcome runConformesh(double eps, conformesh::refine::SegmentRule rule = conformesh::refine::SegmentRule::Ruppert) {
   static const conformesh::intrinsic::IntrinsicTriangulation input = diskPolygon();
   conformesh::refine::RefineOptions o;
   o.epsilon = eps;
-  o.ratioBound = kB;
+  o.ratioBound = gB;
+  o.segmentRule = rule;
   o.boundarySplit = conformesh::refine::BoundarySplit::Geodesic;
   const double t0 = cpuSeconds();
   const conformesh::refine::RefineResult r = conformesh::refine::refineDelaunay(input, o);
@@ -104,7 +107,7 @@ Outcome runCgal(double size) {
   for (int i = 0; i < kPolygon; ++i)
     vh.push_back(cdt.insert(CDT::Point(std::cos(2 * M_PI * i / kPolygon), std::sin(2 * M_PI * i / kPolygon))));
   for (int i = 0; i < kPolygon; ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % kPolygon]);
-  CGAL::refine_Delaunay_mesh_2(cdt, Criteria(1 / (4 * kB * kB), size));
+  CGAL::refine_Delaunay_mesh_2(cdt, Criteria(1 / (4 * gB * gB), size));
   Outcome out;
   out.seconds = cpuSeconds() - t0;
   out.vertices = static_cast<long>(cdt.number_of_vertices());
@@ -149,9 +152,11 @@ std::pair<Outcome, double> measure(const char* tool, double size, int repeats) {
   if (pid == 0) {
     close(fd[0]);
     dup2(fd[1], 1);
-    const std::string sz = std::to_string(size), rep = std::to_string(repeats);
-    execl("/proc/self/exe", "bench_refine_vs_cgal", "--run", tool, sz.c_str(), rep.c_str(),
-          static_cast<char*>(nullptr));
+    char sz[32], bound[32];
+    std::snprintf(sz, sizeof sz, "%.17g", size);
+    std::snprintf(bound, sizeof bound, "%.17g", gB);
+    const std::string rep = std::to_string(repeats);
+    execl("/proc/self/exe", "bench_refine_vs_cgal", "--run", tool, sz, rep.c_str(), bound, static_cast<char*>(nullptr));
     _exit(127);
   }
   close(fd[1]);
@@ -169,10 +174,12 @@ std::pair<Outcome, double> measure(const char* tool, double size, int repeats) {
 int runChild(const std::string& tool, double size, int repeats) {
   Outcome best;
   for (int i = 0; i < repeats; ++i) {
+    const conformesh::refine::SegmentRule rule =
+        tool == "conformesh-chew" ? conformesh::refine::SegmentRule::Chew : conformesh::refine::SegmentRule::Ruppert;
 #ifdef CONFORMESH_HAVE_CGAL
-    const Outcome o = tool == "cgal" ? runCgal(size) : runConformesh(size);
+    const Outcome o = tool == "cgal" ? runCgal(size) : runConformesh(size, rule);
 #else
-    const Outcome o = runConformesh(size);
+    const Outcome o = runConformesh(size, rule);
 #endif
     if (i == 0 || o.seconds < best.seconds) best = o;
   }
@@ -189,7 +196,7 @@ int table() {
   std::printf("|------------|---------:|----------:|----------:|---------:|----------:|----------:|\n");
   for (long target : {1000L, 20000L, 200000L}) {
     const int repeats = target <= 20000 ? 5 : 1;
-    const double eps = calibrate(runConformesh, target, std::sqrt(3.0 / target));
+    const double eps = calibrate([](double e) { return runConformesh(e); }, target, std::sqrt(3.0 / target));
     printRow("conformesh", target, measure("conformesh", eps, repeats));
 #ifdef CONFORMESH_HAVE_CGAL
     const double size = calibrate(runCgal, target, std::sqrt(6.0 / target));
@@ -204,7 +211,7 @@ int table() {
 // Alternating rounds at 20k vertices (the sizes calibrated once), each tool in a fresh process taking its best of 5:
 // on a shared machine the minimum over rounds is the figure least disturbed by other jobs.
 int compare20k(int rounds) {
-  const double eps = calibrate(runConformesh, 20000, std::sqrt(1.75 / 20000));
+  const double eps = calibrate([](double e) { return runConformesh(e); }, 20000, std::sqrt(1.75 / 20000));
 #ifdef CONFORMESH_HAVE_CGAL
   const double size = calibrate(runCgal, 20000, std::sqrt(6.0 / 20000));
 #endif
@@ -222,6 +229,25 @@ int compare20k(int rounds) {
   }
   std::printf("minimum over %d rounds: conformesh %.4f s, CGAL %.4f s, ratio CGAL/conformesh %.2f\n", rounds, best[0],
               best[1], best[1] / best[0]);
+  return 0;
+}
+
+// Below √2 (default B = 1.12, 26.5°): conformesh with Ruppert's and with Chew's segment rule at the same ε (calibrated
+// for Ruppert's rule), and CGAL at the same angle bound calibrated to Ruppert's vertex count. Best of 5 runs each.
+int belowSqrt2(double B) {
+  gB = B;
+  std::printf("B = %.4f (smallest angle >= %.2f°)\n", B, std::asin(1 / (2 * B)) * kDeg);
+  std::printf("| tool       |   target |  vertices | CPU s     | min ang° | mean min° |  peak MiB |\n");
+  std::printf("|------------|---------:|----------:|----------:|---------:|----------:|----------:|\n");
+  for (long target : {1000L, 20000L}) {
+    const double eps = calibrate([](double e) { return runConformesh(e); }, target, std::sqrt(3.0 / target));
+    printRow("Ruppert", target, measure("conformesh", eps, 5));
+    printRow("Chew", target, measure("conformesh-chew", eps, 5));
+#ifdef CONFORMESH_HAVE_CGAL
+    const double size = calibrate(runCgal, target, std::sqrt(6.0 / target));
+    printRow("CGAL 5.5", target, measure("cgal", size, 5));
+#endif
+  }
   return 0;
 }
 
@@ -254,10 +280,15 @@ BENCHMARK(BM_cgal_20k)->Unit(benchmark::kMillisecond);
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc == 5 && std::strcmp(argv[1], "--run") == 0) return runChild(argv[2], std::atof(argv[3]), std::atoi(argv[4]));
+  // --run TOOL SIZE REPEATS [B]: one measurement, in the child process of measure() (B defaults to √2).
+  if ((argc == 5 || argc == 6) && std::strcmp(argv[1], "--run") == 0) {
+    if (argc == 6) gB = std::atof(argv[5]);
+    return runChild(argv[2], std::atof(argv[3]), std::atoi(argv[4]));
+  }
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--table") == 0) return table();
     if (std::strcmp(argv[i], "--scaling") == 0) return scaling();
+    if (std::strcmp(argv[i], "--below-sqrt2") == 0) return belowSqrt2(i + 1 < argc ? std::atof(argv[i + 1]) : 1.12);
     if (std::strcmp(argv[i], "--compare20k") == 0) return compare20k(i + 1 < argc ? std::atoi(argv[i + 1]) : 7);
   }
   benchmark::Initialize(&argc, argv);

@@ -3,6 +3,7 @@
 #include "conformesh/intrinsic/halfedge_mesh.h"
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -98,9 +99,9 @@ HalfedgeMesh HalfedgeMesh::fromFaces(const std::vector<std::array<int, 3>>& inpu
     const auto& fv = inputFaces[f];
     for (int k = 0; k < 3; ++k)
       if (fv[k] < 0 || fv[k] >= nVertices)
-        throw InputError(describeAt(source, "face " + std::to_string(f) + " " + faceString(fv) +
-                                                ": vertex index " + std::to_string(fv[k]) +
-                                                " out of range [0, " + std::to_string(nVertices) + ")"));
+        throw InputError(describeAt(source, "face " + std::to_string(f) + " " + faceString(fv) + ": vertex index " +
+                                                std::to_string(fv[k]) + " out of range [0, " +
+                                                std::to_string(nVertices) + ")"));
     // With explicit edge ids a Δ-complex face may repeat a vertex (a self-loop edge); a soup face may not.
     if (cornerEdgeIds.empty() && (fv[0] == fv[1] || fv[1] == fv[2] || fv[0] == fv[2]))
       throw InputError(describeAt(source, "face " + std::to_string(f) + " " + faceString(fv) + " repeats a vertex"));
@@ -170,10 +171,11 @@ HalfedgeMesh HalfedgeMesh::fromFaces(const std::vector<std::array<int, 3>>& inpu
           flipFace[g] = want;
           queue.push_back(g);
         } else if (flipFace[g] != want) {
-          throw InputError(describeAt(source, "the surface is not orientable: no consistent orientation exists for "
-                                              "the component containing face " +
-                                                  std::to_string(seed) + " (conflict at faces " + std::to_string(f) +
-                                                  " and " + std::to_string(g) + ")"));
+          throw InputError(describeAt(source,
+                                      "the surface is not orientable: no consistent orientation exists for "
+                                      "the component containing face " +
+                                          std::to_string(seed) + " (conflict at faces " + std::to_string(f) + " and " +
+                                          std::to_string(g) + ")"));
         }
       }
     }
@@ -225,8 +227,8 @@ HalfedgeMesh HalfedgeMesh::fromFaces(const std::vector<std::array<int, 3>>& inpu
   }
   for (int v = 0; v < nVertices; ++v) {
     if (m.vertexHalfedge_[v] == kInvalid)
-      throw InputError(describeAt(source, "vertex " + std::to_string(v) +
-                                              " belongs to no face (remove unreferenced vertices first)"));
+      throw InputError(describeAt(
+          source, "vertex " + std::to_string(v) + " belongs to no face (remove unreferenced vertices first)"));
     int count = 0;
     const int start = m.vertexHalfedge_[v];
     int h = start;
@@ -236,8 +238,10 @@ HalfedgeMesh HalfedgeMesh::fromFaces(const std::vector<std::array<int, 3>>& inpu
     } while (h != kInvalid && h != start && count <= corners[v]);
     if (count != corners[v])
       throw InputError(describeAt(source, "pinched vertex " + std::to_string(v) + ": its " +
-                                              std::to_string(corners[v]) + " faces form more than one fan (one fan "
-                                              "has " + std::to_string(count) + ")"));
+                                              std::to_string(corners[v]) +
+                                              " faces form more than one fan (one fan "
+                                              "has " +
+                                              std::to_string(count) + ")"));
   }
   return m;
 }
@@ -462,7 +466,8 @@ int HalfedgeMesh::splitEdge(int e) {
   vertexHalfedge_[v] = q0;  // boundary representative if e is a boundary edge (q0 has no twin then)
 
   if (hb != kInvalid) {
-    // (b -> a = hb, a -> d = nb, d -> b = pb) becomes (b -> p = hb, p -> d, d -> b = pb) + new (p -> a, a -> d, d -> p).
+    // (b -> a = hb, a -> d = nb, d -> b = pb) becomes (b -> p = hb, p -> d, d -> b = pb) + new (p -> a, a -> d, d ->
+    // p).
     const int nb = next(hb), pb = prev(hb);
     const int d = tail_[pb];
     const int eNb = edge_[nb], tNb = moved(twin_[nb]);
@@ -485,6 +490,126 @@ int HalfedgeMesh::splitEdge(int e) {
   }
   edgeHalfedge_[e] = ha;
   return v;
+}
+
+namespace {
+
+// Records that the element now at `from` moves to `to`; an element moved before (its entry ends at `from`) keeps one
+// entry from its original index, so that applyMoves reads every value from the data as it was before the removal.
+void recordMove(std::vector<std::pair<int, int>>& moves, int from, int to) {
+  if (from == to) return;
+  for (auto& m : moves)
+    if (m.second == from) {
+      m.second = to;
+      return;
+    }
+  moves.push_back({from, to});
+}
+
+}  // namespace
+
+bool HalfedgeMesh::removeDegree3Vertex(int v, ElementMoves& moves, int& mergedFace) {
+  moves = {};
+  if (v < 0 || v >= nVertices() || isBoundaryVertex(v)) return false;
+  // Outgoing halfedges h_i = v -> u_i, counter-clockwise; face f_i = (v, u_i, u_{i+1}) has outer halfedge
+  // o_i = next(h_i) = u_i -> u_{i+1} and prev(h_i) = u_{i+1} -> v.
+  int h[3];
+  h[0] = vertexHalfedge_[v];
+  for (int i = 1; i < 3; ++i) h[i] = nextOutgoing(h[i - 1]);
+  if (nextOutgoing(h[2]) != h[0]) return false;
+  for (int i = 0; i < 3; ++i)
+    if (tip(h[i]) == v) return false;
+  int o[3], u[3], spoke[3];
+  for (int i = 0; i < 3; ++i) {
+    o[i] = next(h[i]);
+    u[i] = tail_[o[i]];
+    spoke[i] = edge_[h[i]];
+  }
+  const int F = face(h[0]);
+  // The merged face takes f_0's slot, corner i holding o_i. Old halfedges that survive in it (the o_i), and those whose
+  // role it takes over as a vertex's representative (u_{i+1} -> v becomes u_{i+1} -> u_{i+2}), map to its slots; a twin
+  // inside the star itself (a Δ-complex folded onto the star) follows.
+  auto remap = [&](int x) {
+    for (int i = 0; i < 3; ++i) {
+      if (x == o[i]) return 3 * F + i;
+      if (x == prev(h[i])) return 3 * F + (i + 1) % 3;
+    }
+    return x;
+  };
+  int newTwin[3], newEdgeRep[3], newVertexRep[3];
+  for (int i = 0; i < 3; ++i) {
+    newTwin[i] = twin_[o[i]] == kInvalid ? kInvalid : remap(twin_[o[i]]);
+    newEdgeRep[i] = remap(edgeHalfedge_[edge_[o[i]]]);
+    newVertexRep[i] = remap(vertexHalfedge_[u[i]]);
+  }
+  int edgeOf[3];
+  for (int i = 0; i < 3; ++i) edgeOf[i] = edge_[o[i]];
+  for (int i = 0; i < 3; ++i) recordMove(moves.halfedges, o[i], 3 * F + i);
+  for (int i = 0; i < 3; ++i) {
+    tail_[3 * F + i] = u[i];
+    edge_[3 * F + i] = edgeOf[i];
+  }
+  for (int i = 0; i < 3; ++i) {
+    twin_[3 * F + i] = newTwin[i];
+    if (newTwin[i] != kInvalid) twin_[newTwin[i]] = 3 * F + i;
+    edgeHalfedge_[edgeOf[i]] = newEdgeRep[i];
+    vertexHalfedge_[u[i]] = newVertexRep[i];
+  }
+  mergedFace = F;
+
+  // Compaction by swap-with-last, holes in decreasing order: the last element is then never a hole itself (larger holes
+  // are gone), and each move keeps twins, edge and vertex representatives pointing at the element's new slots.
+  int faceHoles[2] = {face(h[1]), face(h[2])};
+  std::sort(faceHoles, faceHoles + 2, std::greater<int>());
+  for (int hole : faceHoles) {
+    const int L = nFaces() - 1;
+    if (hole != L) {
+      for (int k = 0; k < 3; ++k) {
+        const int from = 3 * L + k, to = 3 * hole + k;
+        tail_[to] = tail_[from];
+        edge_[to] = edge_[from];
+        int tw = twin_[from];
+        if (tw != kInvalid && face(tw) == L) tw = 3 * hole + tw % 3;
+        twin_[to] = tw;
+        if (tw != kInvalid) twin_[tw] = to;
+        if (edgeHalfedge_[edge_[to]] == from) edgeHalfedge_[edge_[to]] = to;
+        if (vertexHalfedge_[tail_[to]] == from) vertexHalfedge_[tail_[to]] = to;
+        recordMove(moves.halfedges, from, to);
+      }
+      if (L == mergedFace)
+        mergedFace = hole;
+      else
+        recordMove(moves.faces, L, hole);
+    }
+    tail_.resize(tail_.size() - 3);
+    twin_.resize(twin_.size() - 3);
+    edge_.resize(edge_.size() - 3);
+  }
+  std::sort(spoke, spoke + 3, std::greater<int>());
+  for (int hole : spoke) {
+    const int L = nEdges() - 1;
+    if (hole != L) {
+      const int a = edgeHalfedge_[L];
+      edgeHalfedge_[hole] = a;
+      edge_[a] = hole;
+      if (twin_[a] != kInvalid) edge_[twin_[a]] = hole;
+      recordMove(moves.edges, L, hole);
+    }
+    edgeHalfedge_.pop_back();
+  }
+  const int L = nVertices() - 1;
+  if (v != L) {
+    const int start = vertexHalfedge_[L];
+    int x = start;
+    do {
+      tail_[x] = v;
+      x = nextOutgoing(x);
+    } while (x != kInvalid && x != start);
+    vertexHalfedge_[v] = start;
+    recordMove(moves.vertices, L, v);
+  }
+  vertexHalfedge_.pop_back();
+  return true;
 }
 
 // === checks
@@ -513,7 +638,8 @@ void HalfedgeMesh::checkInvariants() const {
   for (int v = 0; v < nVertices(); ++v) {
     const int h0 = vertexHalfedge_[v];
     if (h0 < 0 || h0 >= nH || tail_[h0] != v) fail("vertexHalfedge not outgoing at vertex " + std::to_string(v));
-    if (hasBoundaryOut[v] && twin_[h0] != kInvalid) fail("boundary vertex " + std::to_string(v) + " rep not on boundary");
+    if (hasBoundaryOut[v] && twin_[h0] != kInvalid)
+      fail("boundary vertex " + std::to_string(v) + " rep not on boundary");
     if (vertexDegree(v) != corners[v]) fail("fan of vertex " + std::to_string(v) + " is not closed");
   }
 }

@@ -20,6 +20,7 @@
 #include "conformesh/intrinsic/intrinsic_flips.h"
 #include "conformesh/refine/geodesic_trace.h"
 #include "conformesh/refine/robust_predicates.h"
+#include "conformesh/refine/vertex_removal.h"
 
 namespace conformesh::refine {
 
@@ -90,6 +91,10 @@ class Refiner {
   void insertAt(const TraceResult& trace, const InputSurface::Arrival& arrival);
   void insertOnEdge(const TraceResult& trace, int cornerOpposite, const InputSurface::Arrival& arrival);
   std::vector<int> encroachedByPoint(const TraceResult& trace) const;
+  // SegmentRule::Chew: the free vertices strictly inside the diametral disk of boundary edge e, and their deletion
+  // before e is split; returns e's index afterwards (removal compacts the edge array).
+  std::vector<int> freeVerticesInDiametralDisk(int e) const;
+  int deleteFreeVertices(int e);
   std::optional<Vec3> frontalPoint(int f, const std::array<Vec3, 3>& P, const Vec3& c) const;
   void countInsertion();
   // === the loop. drain() serves the queues until they are empty; drainAll() first Lawson-flips every edge and queues
@@ -230,6 +235,7 @@ void Refiner::setupBoundary() {
 }
 
 void Refiner::pushFace(int f) {
+  if (f >= tri_.mesh.nFaces()) return;  // deleted by a vertex removal since it was named
   if (faceQueued_.size() < static_cast<size_t>(tri_.mesh.nFaces())) faceQueued_.resize(tri_.mesh.nFaces(), 0);
   if (faceQueued_[f]) return;
   faceQueued_[f] = 1;
@@ -531,6 +537,101 @@ std::vector<int> Refiner::encroachedByPoint(const TraceResult& trace) const {
   return result;
 }
 
+std::vector<int> Refiner::freeVerticesInDiametralDisk(int e) const {
+  // The diametral disk of e: centred at e's geodesic midpoint, radius half its length (a geodesic disk in the curved
+  // backgrounds). Faces are unfolded from e's own face across interior edges that may meet the disk — an edge PQ of
+  // length ℓ meets it only if min(d(M, P), d(M, Q)) < ρ + ℓ/2, a conservative test valid in every background — so the
+  // search never crosses the boundary: it finds the free vertices inside the disk that are reachable from e within the
+  // faces meeting it (in a convex domain: all of them).
+  const HalfedgeMesh& m = tri_.mesh;
+  const int ha = m.edgeHalfedge(e), k = ha % 3;
+  const std::array<Vec3, 3> P = layoutAtHalfedge(tri_, model_, ha);
+  const double L = tri_.edgeLengths[e], rho = L / 2;
+  const Vec3 M = model_.exp(P[k], model_.tangentToward(P[k], P[(k + 1) % 3]), rho);
+  const int nInput = res_.statistics.inputVertices;
+  std::vector<int> result;
+  cavityStack_.clear();
+  cavityVisited_.clear();
+  cavityStack_.push_back({HalfedgeMesh::face(ha), P});
+  cavityVisited_.push_back(HalfedgeMesh::face(ha));
+  while (!cavityStack_.empty()) {
+    const auto [f, Q] = cavityStack_.back();
+    cavityStack_.pop_back();
+    std::array<double, 3> d;
+    for (int j = 0; j < 3; ++j) {
+      d[j] = model_.distance(M, Q[j]);
+      const int w = m.faceVertex(f, j);
+      // Strictly inside, with a relative slack of 1e-12: a vertex on the circle (a triangle inscribed in it) stays.
+      if (w >= nInput && !m.isBoundaryVertex(w) && d[j] < rho * (1 - 1e-12) &&
+          std::find(result.begin(), result.end(), w) == result.end())
+        result.push_back(w);
+    }
+    for (int j = 0; j < 3; ++j) {
+      const int h = 3 * f + j, g = m.twin(h);
+      if (g == kInvalid) continue;
+      const int f2 = HalfedgeMesh::face(g);
+      if (std::find(cavityVisited_.begin(), cavityVisited_.end(), f2) != cavityVisited_.end()) continue;
+      if (!(std::min(d[j], d[(j + 1) % 3]) < rho + tri_.length(h) / 2)) continue;
+      std::array<Vec3, 3> R;
+      const int kg = g % 3;
+      R[kg] = Q[(j + 1) % 3];
+      R[(kg + 1) % 3] = Q[j];
+      R[(kg + 2) % 3] = unfoldThirdVertex(tri_, model_, g, Q[(j + 1) % 3], Q[j]);
+      cavityVisited_.push_back(f2);
+      cavityStack_.push_back({f2, R});
+    }
+  }
+  return result;
+}
+
+int Refiner::deleteFreeVertices(int e) {
+  std::vector<int> victims = freeVerticesInDiametralDisk(e);
+  const HalfedgeMesh& m = tri_.mesh;
+  auto onFlip = [&](int fe) {
+    ++res_.statistics.flips;
+    const int h = m.edgeHalfedge(fe);
+    pushFace(HalfedgeMesh::face(h));
+    pushFace(HalfedgeMesh::face(m.twin(h)));
+  };
+  for (size_t i = 0; i < victims.size(); ++i) {
+    VertexRemovalResult r = removeInsertedVertex(tri_, sp_, victims[i], res_.statistics.inputVertices, onFlip);
+    if (!r.removed) {
+      ++res_.statistics.refusedDeletions;
+      restoreDelaunay(r.regionEdges);
+      continue;
+    }
+    ++res_.statistics.deletedVertices;
+    // Every per-element array of the refinement follows the compaction (swap-with-last, halfedge_mesh.h).
+    const intrinsic::ElementMoves& mv = r.moves;
+    intrinsic::applyMoves(res_.locations, mv.vertices, m.nVertices());
+    intrinsic::applyMoves(res_.lambda, mv.vertices, m.nVertices());
+    intrinsic::applyMoves(sharpCorner_, mv.vertices, m.nVertices());
+    intrinsic::applyMoves(edgeLoop_, mv.edges, m.nEdges());
+    for (const auto& [from, to] : mv.vertices)
+      for (size_t j = i + 1; j < victims.size(); ++j)
+        if (victims[j] == from) victims[j] = to;
+    for (const auto& [from, to] : mv.edges)
+      if (e == from) e = to;
+    // Queued faces and segments are named by index: a face that moved (and the merged face) is queued again under its
+    // new index; heap entries under old indices are stale and re-tested or skipped (drain, pushFace).
+    faceQueued_.resize(m.nFaces(), 0);
+    if (frontQueued_.size() > static_cast<size_t>(m.nFaces())) frontQueued_.resize(m.nFaces());
+    std::vector<int> moved{r.mergedFace};
+    for (const auto& mvf : mv.faces) moved.push_back(mvf.second);
+    for (int f : moved) {
+      faceQueued_[f] = 0;
+      if (f < static_cast<int>(frontQueued_.size())) frontQueued_[f] = 0;
+      pushFace(f);
+    }
+    for (const auto& [from, to] : mv.edges)
+      if (m.isBoundaryEdge(to)) segmentQueue_.push_back(to);
+    // Removing a vertex leaves the rest of the triangulation Delaunay; only the edges of the region its star covered
+    // can fail the test, and Lawson's flips from them restore it everywhere.
+    restoreDelaunay(r.regionEdges);
+  }
+  return e;
+}
+
 void Refiner::insertOnEdge(const TraceResult& trace, int j, const InputSurface::Arrival& arr) {
   // The point lies on the edge opposite corner j of trace.face (to within round-off): split that edge there.
   const HalfedgeMesh& m = tri_.mesh;
@@ -593,6 +694,9 @@ void Refiner::insertAt(const TraceResult& trace, const InputSurface::Arrival& ar
 }
 
 void Refiner::processSegment(int e) {
+  // Chew's rule keeps the triangulation constrained Delaunay: a vertex inside a diametral circle is allowed, segments
+  // are split only for rejected circumcentres.
+  if (opt_.segmentRule == SegmentRule::Chew) return;
   if (e >= tri_.mesh.nEdges() || !tri_.mesh.isBoundaryEdge(e)) return;
   if (segmentEncroached(e)) splitSegment(e);
 }
@@ -652,6 +756,17 @@ void Refiner::processFace(int f) {
                            ") still needs refining at circumradius " + num(R) + ", below the smallest size " +
                            num(minSize_) + ": the shape bound B = " + num(opt_.ratioBound) +
                            " cannot be met near this face (small input angle?)");
+  if (centroid && opt_.segmentRule == SegmentRule::Chew && m.twin(3 * f + longestK) == kInvalid) {
+    // A hyperbolic triangle without a circumcircle has its vertices on a hypercycle (or horocycle) whose axis lies
+    // beyond its longest edge (the arc bulges away from the axis, so the middle vertex — the largest angle — is on the
+    // near side): its "circumcentre" is beyond that edge. When the edge is a segment this is Chew's rejection;
+    // splitting at the centroid instead would approach the segment forever (measured: a vertex 0.003 from a segment's
+    // midpoint, centroids 10⁻³, 3·10⁻⁴, … from it).
+    ++res_.statistics.rejectedCircumcenters;
+    splitSegment(deleteFreeVertices(m.edge(3 * f + longestK)));
+    pushFace(f);
+    return;
+  }
   // Frontal placement (size-driven triangles only): the point on the bisector of a front edge that makes a triangle of
   // the target size with it. With λ ≡ 0 the size test needs no location, so the frontal point is traced directly;
   // otherwise the circumcentre is located first, for λ(c) of the size test.
@@ -682,9 +797,12 @@ void Refiner::processFace(int f) {
     tr = traceTo(target, theta, r);
   }
   if (!tr.reachedTarget()) {
-    // The circumcentre lies outside the domain: split the boundary edge the geodesic to it crosses (Ruppert).
+    // The circumcentre lies outside the domain (or, in a non-convex domain, behind a segment): split the boundary edge
+    // the geodesic to it crosses (Ruppert, Chew), Chew's rule first deleting the free vertices in its diametral disk.
     ++res_.statistics.rejectedCircumcenters;
-    splitSegment(m.edge(tr.boundaryHalfedge));
+    int s = m.edge(tr.boundaryHalfedge);
+    if (opt_.segmentRule == SegmentRule::Chew) s = deleteFreeVertices(s);
+    splitSegment(s);
     pushFace(f);
     return;
   }
@@ -702,7 +820,7 @@ void Refiner::processFace(int f) {
       frontal = true;
     }
   }
-  if (hasBoundary_) {
+  if (hasBoundary_ && opt_.segmentRule == SegmentRule::Ruppert) {
     const std::vector<int> enc = encroachedByPoint(tr);
     if (!enc.empty()) {
       ++res_.statistics.rejectedCircumcenters;
@@ -830,6 +948,7 @@ void Refiner::drain() {
     if (!frontQueue_.empty()) {
       const int f = frontQueue_.top().second;
       frontQueue_.pop();
+      if (f >= tri_.mesh.nFaces()) continue;  // deleted by a vertex removal (SegmentRule::Chew)
       frontQueued_[f] = 0;
       processFace(f);
       continue;
@@ -837,12 +956,19 @@ void Refiner::drain() {
     if (faceQueue_.empty()) break;
     const int f = faceQueue_.top().second;
     faceQueue_.pop();
+    if (f >= tri_.mesh.nFaces()) continue;  // deleted by a vertex removal (SegmentRule::Chew)
     faceQueued_[f] = 0;
     processFace(f);
   }
 }
 
 }  // namespace
+
+SegmentRule parseSegmentRule(const std::string& name) {
+  if (name == "ruppert") return SegmentRule::Ruppert;
+  if (name == "chew") return SegmentRule::Chew;
+  throw InputError("segment rule '" + name + "' is not one of: ruppert, chew");
+}
 
 RefineResult refineDelaunay(const IntrinsicTriangulation& input, const RefineOptions& options) {
   Refiner refiner(input, options);

@@ -12,11 +12,30 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace conformesh::intrinsic {
 
 constexpr int kInvalid = -1;
+
+// Where the elements that survive a removal now live (HalfedgeMesh::removeDegree3Vertex). Removal compacts the arrays
+// by swap-with-last, so indices stay dense and every loop over 0..n−1 sees live elements only; the price is that a few
+// elements change index, listed here as (old index, new index) pairs, to be applied to per-element data with
+// applyMoves. Halfedge moves include the three halfedges of the merged face.
+struct ElementMoves {
+  std::vector<std::pair<int, int>> vertices, edges, faces, halfedges;
+};
+
+// Applies `moves` (old index → new index, all at once) to per-element data and shrinks it to `newSize`.
+template <class T>
+void applyMoves(std::vector<T>& data, const std::vector<std::pair<int, int>>& moves, int newSize) {
+  std::vector<T> values;
+  values.reserve(moves.size());
+  for (const auto& m : moves) values.push_back(data[m.first]);
+  for (size_t i = 0; i < moves.size(); ++i) data[moves[i].second] = values[i];
+  data.resize(newSize);
+}
 
 // Topology of one connected component.
 struct ComponentTopology {
@@ -89,8 +108,8 @@ class HalfedgeMesh {
   // === mutation
   // Flips interior edge e: the two triangles (a,b,c) and (b,a,d) sharing it become (d,c,a) and (c,d,b), and e now
   // joins c and d. Halfedge indices of the two faces are reassigned; edge indices are stable. Returns false (and
-  // changes nothing) for a boundary edge or an edge whose two sides lie in the same face. Geometric admissibility is the
-  // caller's business (see intrinsic_flips.h).
+  // changes nothing) for a boundary edge or an edge whose two sides lie in the same face. Geometric admissibility is
+  // the caller's business (see intrinsic_flips.h).
   bool flip(int e);
 
   // Inserts a new vertex p inside face f = (a, b, c), splitting it into f = (a, b, p), (b, c, p) and (c, a, p), the two
@@ -99,10 +118,17 @@ class HalfedgeMesh {
 
   // Inserts a new vertex on edge e, splitting e and its one or two faces. Returns the new vertex, or kInvalid (changing
   // nothing) when both sides of e lie in the same face (a Δ-complex face folded onto itself). Edge e keeps the half
-  // starting at tail(edgeHalfedge(e)); the other half and the new interior edges are appended: interior e gives new edges
-  // [p-tip, p-c, p-d], boundary e gives [p-tip, p-c], where c (d) is the vertex opposite e in the face of
+  // starting at tail(edgeHalfedge(e)); the other half and the new interior edges are appended: interior e gives new
+  // edges [p-tip, p-c, p-d], boundary e gives [p-tip, p-c], where c (d) is the vertex opposite e in the face of
   // edgeHalfedge(e) (of its twin).
   int splitEdge(int e);
+
+  // Removes interior vertex v of degree 3 with three distinct edges (no self-loop): its faces (v, a, b), (v, b, c),
+  // (v, c, a) become the one face (a, b, c) made of their three outer halfedges, and v, its three edges and two of the
+  // faces are deleted. Returns false (changing nothing) for a boundary vertex, degree ≠ 3 or a self-loop at v. The
+  // last vertex, edges and faces move into the freed slots (`moves`); `mergedFace` receives the new face's index.
+  // Lengths are the caller's business: the merged face keeps its three outer edges, so they need no new length.
+  bool removeDegree3Vertex(int v, ElementMoves& moves, int& mergedFace);
 
   // Checks every invariant (twins symmetric, edges consistent, fans closed); throws std::logic_error on violation.
   // For tests and debugging: O(n).

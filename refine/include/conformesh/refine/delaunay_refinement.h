@@ -16,11 +16,14 @@
 // a boundary edge is not inserted; the edge is split instead (Ruppert 1995). For loops that are not cocircular, and in
 // curved backgrounds, boundary edges are split at their geodesic midpoint. At boundary corners below 60° segments are
 // split on concentric shells and the shape test is waived for the corner's triangles (their size is still enforced),
-// so that refinement does not cascade into the corner. docs/refinement.md states what is guaranteed.
+// so that refinement does not cascade into the corner. With SegmentRule::Chew the boundary rules are Chew's second
+// algorithm instead (constrained Delaunay; free vertices deleted from a split segment's diametral disk,
+// vertex_removal.h). docs/refinement.md states what is guaranteed.
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "conformesh/intrinsic/intrinsic_triangulation.h"
@@ -35,6 +38,24 @@ enum class BoundarySplit {
   Geodesic,  // always at the geodesic midpoint (a polygonal domain)
 };
 
+// What happens at boundary segments (docs/refinement.md §5–6).
+enum class SegmentRule {
+  // Ruppert 1995: a segment with a vertex inside its diametral circle (encroached) is split before any triangle; a
+  // circumcentre outside the domain or inside a diametral circle is rejected and that segment split. The output is
+  // conforming Delaunay. Termination proved for B ≥ √2 (corners ≥ 60°, planar).
+  Ruppert,
+  // Chew's second algorithm (Chew 1993; analysed by Shewchuk 2002): the triangulation is constrained Delaunay (boundary
+  // edges are never flipped; a vertex may lie inside a segment's diametral circle); a circumcentre is rejected only
+  // when
+  // it is not visible — the geodesic to it crosses a segment s — and then every free vertex (inserted, interior) inside
+  // the diametral disk of s and reachable from s without crossing the boundary is deleted before s is split. Shewchuk
+  // proves termination for B ≥ √5/2 ≈ 1.118 (26.57°) in the plane.
+  Chew,
+};
+
+// "ruppert" / "chew"; InputError naming the accepted values otherwise.
+SegmentRule parseSegmentRule(const std::string& name);
+
 struct RefineProgress {
   std::int64_t insertions = 0;
   int vertices = 0;
@@ -45,12 +66,14 @@ struct RefineOptions {
   // Size bound ε > 0: circumradii end at most ε·e^(−λ) in the background metric.
   double epsilon = 0;
   // Shape bound B = circumradius / shortest edge. √2 is Ruppert's bound (smallest angle ≥ arcsin(1/(2√2)) ≈ 20.7°),
-  // guaranteed to terminate with boundaries whose corners are ≥ 60°; on closed surfaces every B ≥ 1 terminates
-  // (smallest angle ≥ 30° at B = 1). Values below 1 are rejected.
+  // guaranteed to terminate with boundaries whose corners are ≥ 60°; with SegmentRule::Chew, B ≥ √5/2 (Shewchuk, convex
+  // planar domains); on closed surfaces every B ≥ 1 terminates (smallest angle ≥ 30° at B = 1). Values below 1 are
+  // rejected.
   double ratioBound = 1.4142135623730951;
   // Conformal factor λ per INPUT vertex, interpolated at circumcentres; empty means λ ≡ 0 (uniform refinement).
   std::vector<double> lambda;
   BoundarySplit boundarySplit = BoundarySplit::Auto;
+  SegmentRule segmentRule = SegmentRule::Ruppert;
   // Euclidean background: split a bad-SHAPED triangle at Üngör's off-centre (the point on the bisector of its shortest
   // edge that makes a triangle of ratio exactly B with it) instead of its circumcentre when that is nearer. Same
   // bounds, usually fewer vertices when shape drives the refinement (grading); off by default, as the paper inserts
@@ -94,6 +117,10 @@ struct RefineStatistics {
   std::int64_t frontalInsertions = 0;
   std::int64_t boundarySplits = 0;
   std::int64_t rejectedCircumcenters = 0;  // outside the domain or encroaching: a boundary edge was split instead
+  // SegmentRule::Chew: free vertices deleted from diametral disks, and deletions refused (no admissible flip brought
+  // the vertex to degree 3; it stays, vertex_removal.h).
+  std::int64_t deletedVertices = 0;
+  std::int64_t refusedDeletions = 0;
   std::int64_t flips = 0;
   std::int64_t traceSteps = 0;
   int boundaryLoops = 0;
