@@ -20,6 +20,7 @@ namespace conformesh::apps {
 
 // Exit statuses: 0 success, 1 bad input or failed computation (message on stderr), 2 bad command line (CLI11).
 constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
 
 // Prints `j` to stdout, indented, followed by a newline.
 void printJson(const nlohmann::json& j);

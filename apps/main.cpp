@@ -35,7 +35,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // CLI11 prints the message (or the help) and has its own codes per kind of mistake (104–113); the documented
+    // status for every malformed command line is 2, and 0 for --help.
+    return app.exit(e) == 0 ? 0 : conformesh::apps::kExitUsage;
   } catch (const conformesh::InputError& e) {
     std::cerr << "conformesh: error: " << e.what() << '\n';
     return conformesh::apps::kExitFailure;
