@@ -171,6 +171,14 @@ void runLayout(const LayoutCommandOptions& o) {
       j["circles"] = circles;
       break;
     }
+    case intrinsic::UniformizationTarget::FlatCylinder: {
+      char height[32];
+      std::snprintf(height, sizeof height, "%.6g", u.report.cylinderHeight);
+      throw InputError("layout: " + o.input + " is an annulus of log(R/r) = " + height +
+                       ", uniformized to a flat cylinder (circumference 2 pi, that height): its circle domain's inner "
+                       "circle, e^-" +
+                       height + " of the outer one, is below what a planar layout resolves");
+    }
     default:
       throw InputError("layout: " + o.input + " uniformizes to " + intrinsic::toString(u.report.target) +
                        " (genus >= 1 with boundary), which has no canonical-domain layout here");

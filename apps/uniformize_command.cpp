@@ -101,6 +101,7 @@ void runUniformize(const UniformizeOptions& o) {
     j["puncture_attempts"] = r.punctureAttempts;
     j["centring_iterations"] = r.centringIterations;
   }
+  if (r.target == intrinsic::UniformizationTarget::FlatCylinder) j["cylinder_height"] = r.cylinderHeight;
   if (!o.correspondence.empty()) j["correspondence"] = o.correspondence;
   if (o.json) {
     printJson(j);
@@ -116,6 +117,8 @@ void runUniformize(const UniformizeOptions& o) {
   std::printf("  %-30s %.3g rad\n", "max |angle sum - 2pi|", worst);
   std::printf("  %-30s %.3g\n", "Gauss-Bonnet residual", totals.gaussBonnetResidual);
   std::printf("  %-30s %.12g\n", "total area", intrinsic::totalArea(u.uniform));
+  if (r.target == intrinsic::UniformizationTarget::FlatCylinder)
+    std::printf("  %-30s %.12g (circumference 2 pi; = log(R/r) of the annulus)\n", "cylinder height", r.cylinderHeight);
 }
 
 }  // namespace
@@ -133,6 +136,8 @@ void registerUniformizeCommand(CLI::App& app) {
       "  closed genus 1      a flat torus of area 1         -> PLY with Euclidean lengths (no positions)\n"
       "  closed genus >= 2   hyperbolic, curvature -1       -> PLY with hyperbolic lengths\n"
       "  genus 0, boundary   a circle domain (the longest loop the unit circle) -> Euclidean lengths, positions\n"
+      "                      (an annulus beyond log(R/r) = 17.6: a flat cylinder of circumference 2 pi, both\n"
+      "                      loops geodesics, height = log(R/r) -> Euclidean lengths, no positions)\n"
       "  genus >= 1, boundary hyperbolic with geodesic boundary loops\n"
       "The output PLY carries `comment geometry <background>`, the edge element with the lengths, and the vertex\n"
       "property `lambda`: the original metric is ~ e^(2 lambda) times the uniform one. Vertices are not moved by\n"

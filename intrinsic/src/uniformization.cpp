@@ -29,6 +29,8 @@ std::string toString(UniformizationTarget target) {
       return "hyperbolic";
     case UniformizationTarget::CircleDomain:
       return "circle-domain";
+    case UniformizationTarget::FlatCylinder:
+      return "flat-cylinder";
     case UniformizationTarget::HyperbolicGeodesicBoundary:
       return "hyperbolic-geodesic-boundary";
     case UniformizationTarget::FlatKeepBoundary:
@@ -86,6 +88,9 @@ void attachScale(Uniformization& out, const std::vector<double>& w, FlowCorrespo
   log.logScale = w;
   out.correspondence = std::move(log);
 }
+
+Uniformization uniformizeConstant(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                  UniformizationReport report, Background geometry);
 
 // === circle domains (genus 0 with boundary)
 
@@ -188,15 +193,17 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
     // Euclidean).
     const double atLeast = annulusLogRadiusRatioLowerBound(referencePenner(input), loopTips[0], loopTips[1]);
     if (atLeast > kMaxAnnulusLogRadiusRatio) {
-      std::ostringstream message;
-      message.precision(6);
-      message << "uniformize: this annulus (boundary loops through vertices " << loopTips[0][0] << " and "
-              << loopTips[1][0] << ") has conformal modulus at least " << atLeast / (2 * M_PI)
-              << " (Dirichlet principle on the input: log(R/r) >= " << atLeast
-              << "); its circle domain's inner circle would have radius at most " << std::exp(-atLeast)
-              << " of the outer one, which planar double-precision coordinates cannot resolve to 1e-8 (limit: "
-              << "log(R/r) <= " << kMaxAnnulusLogRadiusRatio << ")";
-      throw InputError(message.str());
+      // Its circle domain's inner circle would have radius at most e^{−Λ} of the outer one, below what planar double
+      // coordinates resolve to 10⁻⁸: uniformize to the flat cylinder instead, the same conformal class by z = e^{w}.
+      if (options.progress) {
+        std::ostringstream line;
+        line.precision(6);
+        line << "annulus: log(R/r) >= " << atLeast << " (Dirichlet principle) > " << kMaxAnnulusLogRadiusRatio
+             << ", beyond planar double precision: target the flat cylinder";
+        options.progress(line.str());
+      }
+      report.target = UniformizationTarget::FlatCylinder;
+      return uniformizeConstant(input, options, report, Background::Euclidean);
     }
   }
   ConformalTarget target;
@@ -232,6 +239,15 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
     const double r = (planar[t[0]] - c).norm();
     double deviation = 0;
     for (int v : t) deviation = std::max(deviation, std::abs((planar[v] - c).norm() - r) / r);
+    if (!(deviation <= kMaxLoopCircleDeviation) && loopTips.size() == 2) {
+      // The pre-check's bound was below the limit but the modulus is not: the flat cylinder (see above).
+      if (options.progress)
+        options.progress(
+            "annulus: the circle domain's layout does not resolve the inner circle to 1e-8; target the "
+            "flat cylinder");
+      report.target = UniformizationTarget::FlatCylinder;
+      return uniformizeConstant(input, options, report, Background::Euclidean);
+    }
     if (!(deviation <= kMaxLoopCircleDeviation)) {
       std::ostringstream message;
       message.precision(3);
@@ -268,11 +284,36 @@ Uniformization uniformizeConstant(const IntrinsicTriangulation& input, const Uni
     const double u0 = 0.5 * std::log(-2 * M_PI * m.eulerCharacteristic() / euclideanArea);
     std::fill(metric.u().begin(), metric.u().end(), u0);
   }
-  accumulate(report,
-             solveConformalFlow(metric, target,
-                                withProgress(options, geometry == Background::Hyperbolic ? "hyperbolic" : "flat torus"),
-                                &log));
-  if (geometry == Background::Euclidean) {
+  accumulate(report, solveConformalFlow(
+                         metric, target,
+                         withProgress(options, geometry == Background::Hyperbolic                    ? "hyperbolic"
+                                               : report.target == UniformizationTarget::FlatCylinder ? "flat cylinder"
+                                                                                                     : "flat torus"),
+                         &log));
+  if (report.target == UniformizationTarget::FlatCylinder) {
+    // Every boundary vertex has angle sum π: both loops are closed geodesics of a flat annulus, i.e. the two ends of a
+    // cylinder (circumference C, height H), which have one length. Check that, then scale to C = 2π, so that H is
+    // Λ = log(R/r) of the circle domain e^{−H} < |z| < 1 that z = e^{i(x + iy)} would give.
+    const IntrinsicTriangulation current = metric.triangulation();
+    std::vector<double> loopLength;
+    for (const std::vector<int>& loop : current.mesh.boundaryLoops()) {
+      double length = 0;
+      for (int h : loop) length += current.length(h);
+      loopLength.push_back(length);
+    }
+    const double mismatch = std::abs(loopLength[0] - loopLength[1]) / std::max(loopLength[0], loopLength[1]);
+    if (!(mismatch <= kMaxLoopCircleDeviation)) {
+      std::ostringstream message;
+      message.precision(3);
+      message << "uniformize: flat cylinder: its two boundary geodesics have lengths " << loopLength[0] << " and "
+              << loopLength[1] << " (relative difference " << mismatch << " > " << kMaxLoopCircleDeviation
+              << "), which the two ends of a cylinder cannot have";
+      throw ConvergenceError(message.str());
+    }
+    const double shift = std::log(2 * M_PI / (0.5 * (loopLength[0] + loopLength[1])));
+    for (double& x : metric.u()) x += shift;
+    report.cylinderHeight = totalArea(metric.triangulation()) / (2 * M_PI);
+  } else if (geometry == Background::Euclidean) {
     // Normalize the total area to 1: areas scale by e^{2Δu}.
     const IntrinsicTriangulation current = metric.triangulation();
     const double shift = -0.5 * std::log(totalArea(current));

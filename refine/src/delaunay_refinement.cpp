@@ -222,7 +222,9 @@ void Refiner::setupBoundary() {
         lc.radius = radius;
         lc.centerOnLeft = area2 > 0;
         ++res_.statistics.circleLoops;
-      } else if (opt_.boundarySplit == BoundarySplit::Circle) {
+      } else if (opt_.boundarySplit == BoundarySplit::Circle && maxTurn > 1e-9) {
+        // (A loop that turns nowhere is a closed geodesic — an end of a flat cylinder, uniformization.h — the circle of
+        // infinite radius: it is split at geodesic midpoints, which keep it geodesic.)
         throw InputError("refine: boundary loop " + std::to_string(li) + " (" + std::to_string(n) +
                          " edges) is not inscribed in a circle: vertex " + std::to_string(worstVertex) + " lies " +
                          num(worst) + " from the fitted circle of radius " + num(radius) + " (tolerance " +

@@ -12,6 +12,9 @@
 //                     the longest loop the outer unit circle): the boundary targets are the turning angles of the
 //                     polygon inscribed in a circle with the current boundary lengths, solved together with the
 //                     interior by Newton on the coupled system (ricci_flow.h, CircleLoop) rather than by iterating;
+//                     An annulus whose inner circle would be below e^{−17.6} of the outer one (log(R/r) beyond what
+//                     planar double coordinates resolve to 10⁻⁸) → the flat cylinder instead: both loops closed
+//                     geodesics of circumference 2π, height Λ = log(R/r) (the circle domain is its image by e^{iz});
 //   genus ≥ 1 with boundary → hyperbolic with geodesic boundary loops (zero geodesic curvature).
 // docs/ricci_flow.md derives each step and states what is guaranteed.
 #pragma once
@@ -35,6 +38,7 @@ enum class UniformizationTarget {
   FlatTorus,
   Hyperbolic,
   CircleDomain,
+  FlatCylinder,
   HyperbolicGeodesicBoundary,
   FlatKeepBoundary
 };
@@ -62,6 +66,8 @@ struct UniformizationReport {
   int punctureVertex = -1;  // genus 0 only
   int punctureAttempts = 0;
   int centringIterations = 0;
+  // FlatCylinder only: the height of the cylinder of circumference 2π, i.e. log(R/r) = 2π × the annulus's modulus.
+  double cylinderHeight = 0;
   // Genus 0: the spherical lengths were taken from the Penner form e^{(w_i+w_j)/2} c⁰_ij instead of the chords of the
   // points, because some chord was below 10⁻⁴ (thin appendages; then `positions` of tiny regions coincide in double).
   bool pennerLengths = false;
@@ -81,9 +87,9 @@ struct Uniformization {
 };
 
 // Uniformizes `input` (any background: its Penner lengths are its chords). Throws InputError for more than one
-// connected component, invalid lengths, or an annulus whose inner circle planar doubles cannot resolve (a lower bound
-// on its modulus in the message); ConvergenceError (with the residual reached) when a flow does not converge, or when
-// a circle domain's layout does not reproduce a loop's circle (docs/ricci_flow.md §3.3).
+// connected component or invalid lengths; ConvergenceError (with the residual reached) when a flow does not converge,
+// when a circle domain's layout does not reproduce a loop's circle (three or more loops; an annulus falls back to the
+// flat cylinder), or when a flat cylinder's two ends differ in length (docs/ricci_flow.md §3.3).
 Uniformization uniformize(const IntrinsicTriangulation& input, const UniformizationOptions& options = {});
 
 // Lays out a flat (Euclidean) triangulation of a topological disk or a planar domain in the plane by breadth-first

@@ -34,7 +34,8 @@ namespace conformesh::refine {
 
 enum class BoundarySplit {
   Auto,      // on the circle for a cocircular loop in the Euclidean background, at the geodesic midpoint otherwise
-  Circle,    // always on the circle; a loop that is not cocircular (or a curved background) is an InputError
+  Circle,    // always on the circle; a loop that is not cocircular (or a curved background) is an InputError, except a
+             // loop that turns nowhere (a closed geodesic: an end of a flat cylinder), split at geodesic midpoints
   Geodesic,  // always at the geodesic midpoint (a polygonal domain)
 };
 
