@@ -13,9 +13,9 @@
 #include <limits>
 #include <memory>
 #include <sstream>
-#include <thread>
 
 #include "conformesh/intrinsic/errors.h"
+#include "two_threads.h"
 
 namespace conformesh::intrinsic {
 
@@ -63,24 +63,6 @@ FaceGeometry faceGeometry(Background bg, double L0, double L1, double L2) {
     g.cot[k] = (den - num) / (2.0 * std::sqrt(num * den));
   }
   return g;
-}
-
-// Below this many elements a loop runs on one thread: starting a thread costs more than it saves.
-constexpr std::ptrdiff_t kParallelMin = 20000;
-
-// body(begin, end) over [0, n) in two halves, the upper one on a second thread that is joined before returning (one
-// thread below `minimum`). Each index belongs to one half, so the results do not depend on the timing. A joined thread
-// rather than OpenMP: the machine's two cores are often shared, and waiting threads then sleep instead of spinning.
-template <class Body>
-void inTwoHalves(std::ptrdiff_t n, std::ptrdiff_t minimum, const Body& body) {
-  if (n < minimum || std::thread::hardware_concurrency() < 2) {
-    body(std::ptrdiff_t{0}, n);
-    return;
-  }
-  const std::ptrdiff_t middle = n / 2;
-  std::thread upper([&] { body(middle, n); });
-  body(std::ptrdiff_t{0}, middle);
-  upper.join();
 }
 
 // Current background length of every edge: ℓ(e^{(u_i+u_j)/2} c⁰_ij), with one exponential per vertex. Every element
