@@ -76,7 +76,7 @@ std::int64_t DiscreteConformalMetric::makeDelaunay(double tolerance, FlowCorresp
   // the vertex weights, so apply them explicitly.
   // u does not change while flipping: one exponential per vertex, c_ij = c⁰_ij e^{u_i/2} e^{u_j/2}.
   std::vector<double> half(u_.size());
-  inTwoHalves(static_cast<std::ptrdiff_t>(u_.size()), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+  onTwoCores(static_cast<std::ptrdiff_t>(u_.size()), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
     for (auto v = begin; v < end; ++v) half[v] = std::exp(0.5 * u_[v]);
   });
   auto current = [&](int h) { return tri_.edgeLengths[m.edge(h)] * half[m.tail(h)] * half[m.tip(h)]; };
@@ -92,7 +92,7 @@ std::int64_t DiscreteConformalMetric::makeDelaunay(double tolerance, FlowCorresp
   // are look-ups, and the flips and their order are those of testing every edge when it is reached.
   std::vector<char> flippableAtStart(nE), touched(nE, 0), queued(nE, 0);
   std::vector<double> startMargin(nE);
-  inTwoHalves(nE, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+  onTwoCores(nE, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
     for (auto e = static_cast<int>(begin); e < end; ++e) {
       flippableAtStart[e] = flippable(e);
       if (flippableAtStart[e]) startMargin[e] = margin(e);

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -66,16 +67,16 @@ FaceGeometry faceGeometry(Background bg, double L0, double L1, double L2) {
 }
 
 // Current background length of every edge: ℓ(e^{(u_i+u_j)/2} c⁰_ij), with one exponential per vertex. Every element
-// is computed from shared inputs by one of two threads.
+// is computed from shared inputs by one of the two threads of onTwoCores.
 void currentLengths(const DiscreteConformalMetric& metric, std::vector<double>& length) {
   const HalfedgeMesh& m = metric.mesh();
   const int nV = metric.nVertices(), nE = m.nEdges();
   std::vector<double> half(nV);
-  inTwoHalves(nV, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+  onTwoCores(nV, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
     for (auto v = begin; v < end; ++v) half[v] = std::exp(0.5 * metric.u()[v]);
   });
   length.resize(nE);
-  inTwoHalves(nE, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+  onTwoCores(nE, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
     for (auto e = begin; e < end; ++e) {
       const int h = m.edgeHalfedge(static_cast<int>(e));
       length[e] = lengthFromPenner(metric.geometry(),
@@ -98,7 +99,7 @@ void evaluateFaces(const DiscreteConformalMetric& metric, std::vector<double>& l
   const int nF = m.nFaces();
   currentLengths(metric, length);
   faces.resize(nF);
-  inTwoHalves(nF, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+  onTwoCores(nF, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
     for (auto f = static_cast<int>(begin); f < end; ++f)
       if (!metric.isFrozen(f)) faces[f] = faceGeometry(metric, length, f);
   });
@@ -179,7 +180,7 @@ class SymmetricAssembly {
     for (int e = 0; e < nE; ++e)
       if (lower(e, row, col)) rows[fill[col]++] = row;
     std::vector<int> outer(n + 1, 0);
-    inTwoHalves(n, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    onTwoCores(n, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
       for (auto c = begin; c < end; ++c) {
         std::sort(rows.begin() + start[c] + 1, rows.begin() + start[c + 1]);
         outer[c + 1] = static_cast<int>(std::unique(rows.begin() + start[c], rows.begin() + start[c + 1]) -
@@ -191,13 +192,13 @@ class SymmetricAssembly {
     H.resizeNonZeros(outer[n]);
     std::copy(outer.begin(), outer.end(), H.outerIndexPtr());
     int* inner = H.innerIndexPtr();
-    inTwoHalves(n, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    onTwoCores(n, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
       for (auto c = begin; c < end; ++c)
         std::copy_n(rows.begin() + start[c], outer[c + 1] - outer[c], inner + outer[c]);
     });
     // The slot of every edge's entry (a loop edge: its vertex's diagonal), then of every face's entries.
     std::vector<int> edgeSlot(nE, -1);
-    inTwoHalves(nE, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    onTwoCores(nE, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
       for (auto e = static_cast<int>(begin); e < end; ++e) {
         const int h = m.edgeHalfedge(e);
         const int a = unknownIndex[m.tail(h)], b = unknownIndex[m.tip(h)];
@@ -206,7 +207,7 @@ class SymmetricAssembly {
       }
     });
     slot_.assign(9 * static_cast<std::size_t>(nF), -1);
-    inTwoHalves(nF, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    onTwoCores(nF, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
       for (auto f = static_cast<int>(begin); f < end; ++f) {
         if (metric.isFrozen(f)) continue;
         int idx[3];
@@ -235,7 +236,7 @@ class SymmetricAssembly {
     // The six distinct symmetrized entries of a face: k = j (0, 1, 2), then {0,1}, {0,2}, {1,2}.
     static constexpr int kPair[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
     value_.resize(6 * static_cast<std::size_t>(nF));
-    inTwoHalves(nF, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    onTwoCores(nF, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
       for (auto f = static_cast<int>(begin); f < end; ++f) {
         if (metric.isFrozen(f)) continue;
         double J[3][3];
@@ -283,10 +284,10 @@ class SupernodalCholesky : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eige
 // Two cores: in the postordered supernodal elimination tree, subtrees are contiguous ranges of supernodes and
 // independent of each other in both triangular solves. The heaviest nodes are moved from the top of the tree into a
 // serial "top" part until the remaining subtrees split into two bins of nearly equal work (within 55 : 45). The
-// forward solve runs the bins in parallel; their updates of rows of the top part are added into one buffer per bin,
-// which are subtracted in bin order before the top part is solved, and the backward solve runs the top part first,
-// then the bins in parallel (they only read the top part's values). Every row is computed by one bin in a fixed
-// order, so the result does not depend on the number or timing of the threads.
+// forward solve runs the bins as two chunks of runChunks (two_threads.h); their updates of rows of the top part are
+// added into one buffer per bin, which are subtracted in bin order before the top part is solved, and the backward
+// solve runs the top part first, then the bins in parallel (they only read the top part's values). Every row is
+// computed by one bin in a fixed order, so the result does not depend on the number or timing of the threads.
 class SinglePrecisionFactor {
  public:
   // After an analysis: the structure and the bins. Returns false when CHOLMOD's factor is not supernodal.
@@ -361,6 +362,7 @@ class SinglePrecisionFactor {
           topRows_.push_back(c);
         }
     for (auto& buffer : buffer_) buffer.assign(n_, 0.0);
+    for (auto& scratch : scratch_) scratch.assign(maxRows_, 0.0);
     return true;
   }
 
@@ -369,9 +371,9 @@ class SinglePrecisionFactor {
     const double* x = static_cast<const double*>(L->x);
     const std::ptrdiff_t size = px_[nsuper_];
     // Two threads for the solves once L has ≥ 10⁶ stored entries (≈ 10⁴ vertices, a solve of ≈ 1 ms).
-    parallelMin_ = size >= 1000000 ? 2 : 3;
+    parallel_ = size >= 1000000;
     value_.resize(size);
-    inTwoHalves(size, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    onTwoCores(size, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
       for (auto k = begin; k < end; ++k) value_[k] = static_cast<float>(x[k]);
     });
     valid_ = true;
@@ -383,26 +385,26 @@ class SinglePrecisionFactor {
     y_.resize(n_);
     for (int k = 0; k < n_; ++k) y_[k] = b[perm_[k]];
     double* y = y_.data();
-    inTwoHalves(2, parallelMin_, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
-      std::vector<double> scratch(maxRows_);
-      for (auto bin = begin; bin < end; ++bin) {
-        double* buffer = buffer_[bin].data();
-        for (int r : topRows_) buffer[r] = 0;
-        for (const auto& range : bins_[bin])
-          for (int t = range.first; t < range.second; ++t) forward(t, y, buffer, scratch.data());
-      }
+    auto bothBins = [&](const std::function<void(int)>& bin) {
+      if (parallel_)
+        runChunks(2, bin);
+      else
+        for (int chunk = 0; chunk < 2; ++chunk) bin(chunk);
+    };
+    bothBins([&](int bin) {
+      double* buffer = buffer_[bin].data();
+      for (int r : topRows_) buffer[r] = 0;
+      for (const auto& range : bins_[bin])
+        for (int t = range.first; t < range.second; ++t) forward(t, y, buffer, scratch_[bin].data());
     });
     for (int r : topRows_) y[r] = (y[r] - buffer_[0][r]) - buffer_[1][r];
-    std::vector<double> scratch(maxRows_);
     for (int t = 0; t < nsuper_; ++t)
-      if (inTop_[t]) forward(t, y, nullptr, scratch.data());
+      if (inTop_[t]) forward(t, y, nullptr, scratch_[0].data());
     for (int t = nsuper_ - 1; t >= 0; --t)
-      if (inTop_[t]) backward(t, y, scratch.data());
-    inTwoHalves(2, parallelMin_, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
-      std::vector<double> local(maxRows_);
-      for (auto bin = begin; bin < end; ++bin)
-        for (auto range = bins_[bin].rbegin(); range != bins_[bin].rend(); ++range)
-          for (int t = range->second - 1; t >= range->first; --t) backward(t, y, local.data());
+      if (inTop_[t]) backward(t, y, scratch_[0].data());
+    bothBins([&](int bin) {
+      for (auto range = bins_[bin].rbegin(); range != bins_[bin].rend(); ++range)
+        for (int t = range->second - 1; t >= range->first; --t) backward(t, y, scratch_[bin].data());
     });
     x.resize(n_);
     for (int k = 0; k < n_; ++k) x[perm_[k]] = y[k];
@@ -456,13 +458,13 @@ class SinglePrecisionFactor {
 
   bool valid_ = false;
   int n_ = 0, nsuper_ = 0, maxRows_ = 0;
-  std::ptrdiff_t parallelMin_ = 3;  // inTwoHalves over the 2 bins: 2 = two threads, 3 = one
+  bool parallel_ = false;  // the two bins on two threads
   const int *perm_ = nullptr, *super_ = nullptr, *pi_ = nullptr, *px_ = nullptr, *rows_ = nullptr;
   std::vector<float> value_;
   std::vector<char> inTop_, topRow_;
   std::vector<int> topRows_;
   std::vector<std::pair<int, int>> bins_[2];  // supernode ranges [first, end) of the subtrees of each bin
-  std::vector<double> buffer_[2];
+  std::vector<double> buffer_[2], scratch_[2];
   Eigen::VectorXd y_;
 };
 

@@ -459,7 +459,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     // only on its own lengths, which only the flips below change — and they freeze the faces they touch — so it is
     // tested for all faces first, on two threads.
     std::vector<char> valid(m.nFaces());
-    inTwoHalves(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    onTwoCores(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
       for (auto f = static_cast<int>(begin); f < end; ++f) {
         double L[3];
         for (int k = 0; k < 3; ++k) L[k] = metric.length(m.edge(3 * f + k));
@@ -559,7 +559,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   };
   // Tested on two threads; the first failing edge in face order is reported.
   std::vector<char> faceLaidOut(m.nFaces(), 1);
-  inTwoHalves(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+  onTwoCores(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
     for (auto f = static_cast<int>(begin); f < end; ++f)
       if (!frozen[f]) faceLaidOut[f] = laidOut(3 * f) && laidOut(3 * f + 1) && laidOut(3 * f + 2);
   });
@@ -589,7 +589,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   const double rho = 1.0 / std::max(radii[radii.size() / 2], 1e-300);
   std::vector<double> w(nV);
   std::vector<Eigen::Vector3d> x(nV);
-  inTwoHalves(nV, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+  onTwoCores(nV, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
     for (auto v = static_cast<int>(begin); v < end; ++v) {
       if (v == inf) continue;
       const Eigen::Vector2d p = rho * (z[v] - centroid);
@@ -632,7 +632,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     c *= 0.75;
     if (c.norm() > 0.5) c *= 0.5 / c.norm();
     const double k = 1 - c.squaredNorm();
-    inTwoHalves(nV, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    onTwoCores(nV, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
       for (auto v = begin; v < end; ++v) {
         const double d2 = (x[v] - c).squaredNorm();
         w[v] += std::log(k / d2);
@@ -664,7 +664,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     fromPoints[e] = (x[m.tail(h)] - x[m.tip(h)]).norm() >= 1e-4;
     allResolved = allResolved && fromPoints[e];
   }
-  inTwoHalves(m.nEdges(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+  onTwoCores(m.nEdges(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
     for (auto e = static_cast<int>(begin); e < end; ++e) {
       const int h = m.edgeHalfedge(e), a = m.tail(h), b = m.tip(h);
       sphere.edgeLengths[e] = allResolved ? sphericalDistance(x[a], x[b])
@@ -676,7 +676,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   // Faces and corner angles on two threads; the first failing face is reported, the angle sums are added in
   // halfedge order.
   std::vector<char> faceGood(m.nFaces());
-  inTwoHalves(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+  onTwoCores(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
     for (auto f = static_cast<int>(begin); f < end; ++f) {
       const Eigen::Vector3d &a = x[m.faceVertex(f, 0)], &b = x[m.faceVertex(f, 1)], &c = x[m.faceVertex(f, 2)];
       const bool resolved = fromPoints[m.edge(3 * f)] && fromPoints[m.edge(3 * f + 1)] && fromPoints[m.edge(3 * f + 2)];
@@ -696,7 +696,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   }
   const std::vector<double> sums = [&] {
     std::vector<double> corner(m.nHalfedges()), s(nV, 0.0);
-    inTwoHalves(m.nHalfedges(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    onTwoCores(m.nHalfedges(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
       for (auto h = static_cast<int>(begin); h < end; ++h) corner[h] = cornerAngle(sphere, h);
     });
     for (int h = 0; h < m.nHalfedges(); ++h) s[m.tail(h)] += corner[h];
