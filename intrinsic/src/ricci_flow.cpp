@@ -366,7 +366,7 @@ class SinglePrecisionFactor {
     return true;
   }
 
-  // After a factorization with that analysis: the values in single precision.
+  // After a factorization with that analysis, before the first solve with it: the values in single precision.
   void setValues(const cholmod_factor* L) {
     const double* x = static_cast<const double*>(L->x);
     const std::ptrdiff_t size = px_[nsuper_];
@@ -379,6 +379,7 @@ class SinglePrecisionFactor {
     valid_ = true;
   }
   bool valid() const { return valid_; }
+  void invalidate() { valid_ = false; }
 
   // x = Pᵀ L̃⁻ᵀ L̃⁻¹ P b.
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
@@ -507,7 +508,7 @@ class FlowSolverCache {
     haveFactor_ = solver_.info() == Eigen::Success;
     if (!haveFactor_) return false;
     if (!analysed_) analysed_ = single_.analyse(solver_.factor());
-    if (analysed_) single_.setValues(solver_.factor());
+    single_.invalidate();  // rounded when the conjugate gradients first need it (a torus at 10⁶ never does)
     x = solver_.solve(b);
     return true;
   }
@@ -516,6 +517,7 @@ class FlowSolverCache {
   bool preconditionedCG(const SparseMatrix& H, const Eigen::VectorXd& b, double relativeTolerance, Eigen::VectorXd& x) {
     const double bound = relativeTolerance * b.norm();
     x.setZero(b.size());
+    if (analysed_ && !single_.valid()) single_.setValues(solver_.factor());
     auto precondition = [&](const Eigen::VectorXd& residual, Eigen::VectorXd& out) {
       if (single_.valid())
         single_.solve(residual, out);
