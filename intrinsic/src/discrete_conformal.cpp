@@ -7,6 +7,7 @@
 #include <string>
 
 #include "conformesh/intrinsic/errors.h"
+#include "two_threads.h"
 
 namespace conformesh::intrinsic {
 
@@ -75,27 +76,48 @@ std::int64_t DiscreteConformalMetric::makeDelaunay(double tolerance, FlowCorresp
   // the vertex weights, so apply them explicitly.
   // u does not change while flipping: one exponential per vertex, c_ij = c⁰_ij e^{u_i/2} e^{u_j/2}.
   std::vector<double> half(u_.size());
-  for (std::size_t v = 0; v < u_.size(); ++v) half[v] = std::exp(0.5 * u_[v]);
+  onTwoCores(static_cast<std::ptrdiff_t>(u_.size()), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    for (auto v = begin; v < end; ++v) half[v] = std::exp(0.5 * u_[v]);
+  });
   auto current = [&](int h) { return tri_.edgeLengths[m.edge(h)] * half[m.tail(h)] * half[m.tip(h)]; };
   auto margin = [&](int e) {
     const int h = m.edgeHalfedge(e), t = m.twin(h);
     return pennerDelaunayMargin(current(h), current(HalfedgeMesh::next(h)), current(HalfedgeMesh::prev(h)),
                                 current(HalfedgeMesh::next(t)), current(HalfedgeMesh::prev(t)));
   };
-  std::vector<int> stack;
-  std::vector<char> queued(nE, 0);
-  for (int e = nE - 1; e >= 0; --e)
-    if (flippable(e)) {
-      stack.push_back(e);
-      queued[e] = 1;
+  // Lawson's stack: every flippable edge in increasing order, below the edges that flips push (the quad's four sides
+  // when not already waiting). Every edge of the initial sweep is tested when it is reached, with its margin at that
+  // time; that margin is the one of the start unless a flip has changed one of its two faces since (it was a side or
+  // the diagonal of a flipped quad). The start margins of all edges are computed first on two threads, so most tests
+  // are look-ups, and the flips and their order are those of testing every edge when it is reached.
+  std::vector<char> flippableAtStart(nE), touched(nE, 0), queued(nE, 0);
+  std::vector<double> startMargin(nE);
+  onTwoCores(nE, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    for (auto e = static_cast<int>(begin); e < end; ++e) {
+      flippableAtStart[e] = flippable(e);
+      if (flippableAtStart[e]) startMargin[e] = margin(e);
     }
+  });
+  for (int e = 0; e < nE; ++e) queued[e] = flippableAtStart[e];
+  std::vector<int> stack;
   const std::int64_t cap = 1000 * static_cast<std::int64_t>(std::max(1, nE));
   std::int64_t flips = 0;
-  while (!stack.empty()) {
-    const int e = stack.back();
-    stack.pop_back();
+  int sweep = 0;  // next edge of the initial sweep
+  while (true) {
+    int e;
+    bool fromSweep = false;
+    if (!stack.empty()) {
+      e = stack.back();
+      stack.pop_back();
+    } else {
+      while (sweep < nE && !flippableAtStart[sweep]) ++sweep;
+      if (sweep == nE) break;
+      e = sweep++;
+      fromSweep = true;
+    }
     queued[e] = 0;
-    if (!(margin(e) < -tolerance)) continue;
+    const double value = fromSweep && !touched[e] ? startMargin[e] : margin(e);
+    if (!(value < -tolerance)) continue;
     if (!flipPtolemy(e, log)) continue;
     const int h = m.edgeHalfedge(e), t = m.twin(h);
     const int eBc = m.edge(HalfedgeMesh::next(h)), eCa = m.edge(HalfedgeMesh::prev(h));
@@ -103,11 +125,14 @@ std::int64_t DiscreteConformalMetric::makeDelaunay(double tolerance, FlowCorresp
     if (++flips > cap)
       throw ConvergenceError("Ptolemy flipping exceeded " + std::to_string(cap) +
                              " flips; the conformal factor is probably not finite");
-    for (int g : {eBc, eCa, eAd, eDb})
+    touched[e] = 1;
+    for (int g : {eBc, eCa, eAd, eDb}) {
+      touched[g] = 1;
       if (!queued[g] && flippable(g)) {
         queued[g] = 1;
         stack.push_back(g);
       }
+    }
   }
   return flips;
 }

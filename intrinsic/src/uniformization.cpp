@@ -16,6 +16,7 @@
 
 #include "conformesh/intrinsic/discrete_conformal.h"
 #include "conformesh/intrinsic/errors.h"
+#include "two_threads.h"
 
 namespace conformesh::intrinsic {
 
@@ -495,10 +496,20 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     // stopping the next solve at a degenerate face would put them straight back (measured: a 2-cycle of rounds).
     if (!solved.stoppedAtDegenerate) flow.returnAtDegenerateStall = false;
     // All repairs of one kind are batched per round (each flip only touches its own quad; the faces it creates
-    // around ∞ are marked frozen at once so that later candidates see the current star).
+    // around ∞ are marked frozen at once so that later candidates see the current star). A face's validity depends
+    // only on its own lengths, which only the flips below change — and they freeze the faces they touch — so it is
+    // tested for all faces first, on two threads.
+    std::vector<char> valid(m.nFaces());
+    onTwoCores(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+      for (auto f = static_cast<int>(begin); f < end; ++f) {
+        double L[3];
+        for (int k = 0; k < 3; ++k) L[k] = metric.length(m.edge(3 * f + k));
+        valid[f] = frozen[f] || isValidTriangle(Background::Euclidean, L[0], L[1], L[2]);
+      }
+    });
     bool changed = false;
     for (int f = 0; f < m.nFaces(); ++f) {
-      if (frozen[f]) continue;
+      if (frozen[f] || valid[f]) continue;
       double L[3];
       for (int k = 0; k < 3; ++k) L[k] = metric.length(m.edge(3 * f + k));
       if (isValidTriangle(Background::Euclidean, L[0], L[1], L[2])) continue;
@@ -583,12 +594,22 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     return {false, e.what()};
   }
   const double allowance = std::max(1e-10, 10 * report.effectiveTolerance * std::sqrt(double(nV)));
+  auto laidOut = [&](int h) {
+    const double length = planarTri.length(h), laid = (z[m.tip(h)] - z[m.tail(h)]).norm();
+    return std::abs(laid - length) <= 1e-6 * length + allowance * (z[m.tip(h)].norm() + z[m.tail(h)].norm());
+  };
+  // Tested on two threads; the first failing edge in face order is reported.
+  std::vector<char> faceLaidOut(m.nFaces(), 1);
+  onTwoCores(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    for (auto f = static_cast<int>(begin); f < end; ++f)
+      if (!frozen[f]) faceLaidOut[f] = laidOut(3 * f) && laidOut(3 * f + 1) && laidOut(3 * f + 2);
+  });
   for (int f = 0; f < m.nFaces(); ++f) {
-    if (frozen[f]) continue;
+    if (frozen[f] || faceLaidOut[f]) continue;
     for (int k = 0; k < 3; ++k) {
       const int h = 3 * f + k;
       const double length = planarTri.length(h), laid = (z[m.tip(h)] - z[m.tail(h)]).norm();
-      if (!(std::abs(laid - length) <= 1e-6 * length + allowance * (z[m.tip(h)].norm() + z[m.tail(h)].norm()))) {
+      if (!laidOut(h)) {
         std::ostringstream msg;
         msg.precision(3);
         msg << "the planar layout gives edge " << m.edge(h) << " the length " << laid << " instead of " << length
@@ -609,16 +630,18 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   const double rho = 1.0 / std::max(radii[radii.size() / 2], 1e-300);
   std::vector<double> w(nV);
   std::vector<Eigen::Vector3d> x(nV);
-  for (int v = 0; v < nV; ++v) {
-    if (v == inf) continue;
-    const Eigen::Vector2d p = rho * (z[v] - centroid);
-    const double r2 = p.squaredNorm();
-    // The y-reflection makes the map orientation preserving for the outward normal (stereographic projection from
-    // the north pole reverses it); reflections do not change the conformal factor.
-    x[v] = Eigen::Vector3d(2 * p.x(), -2 * p.y(), r2 - 1) / (r2 + 1);
-    // Inverse stereographic projection scales chords by e^{(s_a+s_b)/2}, e^{s} = 2/(1+|p|²).
-    w[v] = metric.u()[v] + std::log(rho) + std::log(2 / (1 + r2));
-  }
+  onTwoCores(nV, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    for (auto v = static_cast<int>(begin); v < end; ++v) {
+      if (v == inf) continue;
+      const Eigen::Vector2d p = rho * (z[v] - centroid);
+      const double r2 = p.squaredNorm();
+      // The y-reflection makes the map orientation preserving for the outward normal (stereographic projection from
+      // the north pole reverses it); reflections do not change the conformal factor.
+      x[v] = Eigen::Vector3d(2 * p.x(), -2 * p.y(), r2 - 1) / (r2 + 1);
+      // Inverse stereographic projection scales chords by e^{(s_a+s_b)/2}, e^{s} = 2/(1+|p|²).
+      w[v] = metric.u()[v] + std::log(rho) + std::log(2 / (1 + r2));
+    }
+  });
   x[inf] = Eigen::Vector3d(0, 0, 1);
   {
     double sum = 0;
@@ -650,11 +673,13 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     c *= 0.75;
     if (c.norm() > 0.5) c *= 0.5 / c.norm();
     const double k = 1 - c.squaredNorm();
-    for (int v = 0; v < nV; ++v) {
-      const double d2 = (x[v] - c).squaredNorm();
-      w[v] += std::log(k / d2);
-      x[v] = (k * (x[v] - c) / d2 - c).normalized();
-    }
+    onTwoCores(nV, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+      for (auto v = begin; v < end; ++v) {
+        const double d2 = (x[v] - c).squaredNorm();
+        w[v] += std::log(k / d2);
+        x[v] = (k * (x[v] - c) / d2 - c).normalized();
+      }
+    });
     report.centringIterations = it + 1;
   }
 
@@ -680,19 +705,29 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     fromPoints[e] = (x[m.tail(h)] - x[m.tip(h)]).norm() >= 1e-4;
     allResolved = allResolved && fromPoints[e];
   }
-  for (int e = 0; e < m.nEdges(); ++e) {
-    const int h = m.edgeHalfedge(e), a = m.tail(h), b = m.tip(h);
-    sphere.edgeLengths[e] = allResolved ? sphericalDistance(x[a], x[b])
-                                        : lengthFromPenner(Background::Spherical,
-                                                           metric.referencePenner(e) * std::exp(0.5 * (w[a] + w[b])));
-  }
+  onTwoCores(m.nEdges(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    for (auto e = static_cast<int>(begin); e < end; ++e) {
+      const int h = m.edgeHalfedge(e), a = m.tail(h), b = m.tip(h);
+      sphere.edgeLengths[e] = allResolved ? sphericalDistance(x[a], x[b])
+                                          : lengthFromPenner(Background::Spherical,
+                                                             metric.referencePenner(e) * std::exp(0.5 * (w[a] + w[b])));
+    }
+  });
   report.pennerLengths = !allResolved;
+  // Faces and corner angles on two threads; the first failing face is reported, the angle sums are added in
+  // halfedge order.
+  std::vector<char> faceGood(m.nFaces());
+  onTwoCores(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    for (auto f = static_cast<int>(begin); f < end; ++f) {
+      const Eigen::Vector3d &a = x[m.faceVertex(f, 0)], &b = x[m.faceVertex(f, 1)], &c = x[m.faceVertex(f, 2)];
+      const bool resolved = fromPoints[m.edge(3 * f)] && fromPoints[m.edge(3 * f + 1)] && fromPoints[m.edge(3 * f + 2)];
+      faceGood[f] = !(resolved && !((b - a).cross(c - a).dot(a + b + c) > 0)) &&
+                    isValidTriangle(Background::Spherical, sphere.length(3 * f), sphere.length(3 * f + 1),
+                                    sphere.length(3 * f + 2));
+    }
+  });
   for (int f = 0; f < m.nFaces(); ++f) {
-    const Eigen::Vector3d &a = x[m.faceVertex(f, 0)], &b = x[m.faceVertex(f, 1)], &c = x[m.faceVertex(f, 2)];
-    const bool resolved = fromPoints[m.edge(3 * f)] && fromPoints[m.edge(3 * f + 1)] && fromPoints[m.edge(3 * f + 2)];
-    if ((resolved && !((b - a).cross(c - a).dot(a + b + c) > 0)) ||
-        !isValidTriangle(Background::Spherical, sphere.length(3 * f), sphere.length(3 * f + 1),
-                         sphere.length(3 * f + 2))) {
+    if (!faceGood[f]) {
       std::ostringstream msg;
       msg.precision(3);
       msg << "face " << f << " is not positively oriented on the sphere (side lengths " << sphere.length(3 * f) << ", "
@@ -701,8 +736,11 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     }
   }
   const std::vector<double> sums = [&] {
-    std::vector<double> s(nV, 0.0);
-    for (int h = 0; h < m.nHalfedges(); ++h) s[m.tail(h)] += cornerAngle(sphere, h);
+    std::vector<double> corner(m.nHalfedges()), s(nV, 0.0);
+    onTwoCores(m.nHalfedges(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+      for (auto h = static_cast<int>(begin); h < end; ++h) corner[h] = cornerAngle(sphere, h);
+    });
+    for (int h = 0; h < m.nHalfedges(); ++h) s[m.tail(h)] += corner[h];
     return s;
   }();
   for (int v = 0; v < nV; ++v)
