@@ -202,7 +202,8 @@ class ProgressCallback : public ceres::IterationCallback {
     if (progress_)
       progress_(stage_ + " iteration " + std::to_string(s.iteration) + ": cost " + sci(s.cost) + " (RMS residual " +
                 sci(std::sqrt(2 * s.cost / edges_)) + "), step " + sci(s.step_norm) +
-                (s.step_is_successful ? "" : " rejected"));
+                (s.step_is_successful ? "" : " rejected") + ", " + std::to_string(s.linear_solver_iterations) +
+                " linear-solver iterations, trust region " + sci(s.trust_region_radius));
     return ceres::SOLVER_CONTINUE;
   }
 
@@ -457,7 +458,15 @@ EmbeddingResult fitIsometricEmbedding(const IntrinsicTriangulation& tri, const E
     ProgressCallback cb(options.progress, "embed: regularized fit", m.nEdges());
     // The regularized optimum is only a start: its RMS residual is the regularizer's bias (~1e-3 on the ellipsoid), and
     // once LM stops gaining 1e-6 of the cost per step it has reached the basin the second solve needs. Converging it
-    // further (to the 1e-15 of the final solve) cost a third of the 20k-vertex fit and most of the 200k one.
+    // further (to the 1e-15 of the final solve) cost a third of the 20k-vertex fit and most of the 200k one. Stopping
+    // sooner is not safe: at 20 252 vertices a stop at 1e-2 (5 steps instead of 7; the two skipped steps have norm 0.08
+    // over all 3V coordinates) led the second solve to a different polyhedron with the same lengths (Procrustes
+    // RMS 3.584e-5 against the convex one's 3.572e-5). Jacobi rather than Ceres' SUBSET preconditioner on the edge
+    // terms: the edge-only JᵀJ barely resists normal motion (an edge leaves the tangent plane at angle ≈ κℓ/2, so a
+    // vertex moved by t along the normal changes its edges by ≈ tκ/2 relative, against ≈ t/ℓ for the dihedral terms),
+    // so the preconditioned matrix keeps eigenvalues up to ≈ w²/(κℓ)² (≈ 10³ at 20k vertices) on all V normal
+    // directions, and CG needed as many iterations as with Jacobi (187–500 per step at 20k), each with two triangular
+    // solves (docs/benchmarks.md).
     const auto summary = solve(problem, ceres::CGNR, options.maxIterationsRegularized, 1e-6, options.threads, &cb);
     res.regularizedIterations = static_cast<int>(summary.iterations.size()) - 1;
   }
