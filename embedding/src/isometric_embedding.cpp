@@ -176,19 +176,26 @@ struct EdgeLengthResidual {
   double inverseLength;
 };
 
-// w·(n₁ − n₂) for faces (a, b, c) and (b, a, d) sharing edge ab; the normals are normalized (a zero normal — a
-// degenerate face — makes the residual undefined, so it is skipped by returning false, which LM treats as a rejected
-// step).
+// 2w·sin(β/2) for faces (a, b, c) and (b, a, d) sharing edge ab, β the signed angle between their unit normals n₁, n₂
+// (positive where convex, as in mean_curvature_measure.h). Its square is w²|n₁ − n₂|² (|n₁ − n₂| = 2 sin(|β|/2)), so
+// the regularizer's energy — and the first solve's optimum — is that of the vector residual w·(n₁ − n₂), but in one
+// Jacobian row instead of three: per interior edge the Jacobian holds 6 + 12 entries instead of 6 + 36, and the
+// conjugate-gradient iterations of the first solve, a product with J and one with Jᵀ each, get cheaper in proportion
+// (20 252 vertices: the same 7 + 9 steps, CG iteration counts within 1, the same polyhedron, 39 s CPU instead of 54 s).
+// At β = ±π (a diamond folded flat onto itself) the residual jumps from 2w to −2w, its energy does not. A zero normal
+// or edge (a degenerate face) leaves β undefined: the residual returns false, which LM treats as a
+// rejected step.
 struct DihedralResidual {
   explicit DihedralResidual(double w) : weight(w) {}
   template <typename T>
   bool operator()(const T* a, const T* b, const T* c, const T* d, T* r) const {
     using V = Eigen::Matrix<T, 3, 1>;
     const V A(a[0], a[1], a[2]), B(b[0], b[1], b[2]), C(c[0], c[1], c[2]), D(d[0], d[1], d[2]);
-    const V n1 = (B - A).cross(C - A), n2 = (A - B).cross(D - B);
-    const T l1 = n1.norm(), l2 = n2.norm();
-    if (!(l1 > T(0)) || !(l2 > T(0))) return false;
-    for (int k = 0; k < 3; ++k) r[k] = T(weight) * (n1[k] / l1 - n2[k] / l2);
+    const V e = B - A, n1 = e.cross(C - A), n2 = (A - B).cross(D - B);
+    const T l1 = n1.norm(), l2 = n2.norm(), le = e.norm();
+    if (!(l1 > T(0)) || !(l2 > T(0)) || !(le > T(0))) return false;
+    const T beta = ceres::atan2(n1.cross(n2).dot(e) / (l1 * l2 * le), n1.dot(n2) / (l1 * l2));
+    r[0] = T(2 * weight) * ceres::sin(beta / T(2));
     return true;
   }
   double weight;
@@ -451,7 +458,7 @@ EmbeddingResult fitIsometricEmbedding(const IntrinsicTriangulation& tri, const E
       const int a = m.tail(h), b = m.tip(h), c = m.tip(HalfedgeMesh::next(h)), d = m.tip(HalfedgeMesh::next(t));
       // Ceres needs four distinct parameter blocks; in a Δ-complex c may equal d (or a, b): skip such edges.
       if (c == d || c == a || c == b || d == a || d == b) continue;
-      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<DihedralResidual, 3, 3, 3, 3, 3>(
+      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<DihedralResidual, 1, 3, 3, 3, 3>(
                                    new DihedralResidual(options.regularizerWeight)),
                                nullptr, &x[3 * a], &x[3 * b], &x[3 * c], &x[3 * d]);
     }
