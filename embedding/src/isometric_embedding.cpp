@@ -449,7 +449,18 @@ EmbeddingResult fitIsometricEmbedding(const IntrinsicTriangulation& tri, const E
   };
 
   t0 = Clock::now();
-  if (options.regularizerWeight > 0) {
+  // Continuation in the weight: w, w/10, w/100, each stage started at the previous one's optimum, then the pure fit.
+  // The regularizer's bias (its optimum's distance from the realization) shrinks with w, so the pure fit starts next
+  // to the realization instead of a bias away from it. Started from the w = 1 optimum directly, the pure fit's first,
+  // nearly undamped Gauss–Newton steps (at 50 412 vertices of length 0.18 over all 3V coordinates) popped vertices
+  // through their links — along the normal a vertex's edges change only by ≈ tκ/2, so the linear model asks for moves
+  // larger than the vertex's height over its link, ≈ κℓ²/2 — and reached a round-off residual at a non-convex
+  // polyhedron (90 edges bent the wrong way); after the w/100 stage its first step is 3e-4 long at 20k. The smaller
+  // weights also cost little: from the previous optimum their CG solves take 20–140 iterations, not the cap.
+  std::vector<double> weights;
+  if (options.regularizerWeight > 0)
+    weights = {options.regularizerWeight, options.regularizerWeight / 10, options.regularizerWeight / 100};
+  for (const double w : weights) {
     ceres::Problem problem(po);
     addEdges(problem);
     for (int e = 0; e < m.nEdges(); ++e) {
@@ -458,11 +469,11 @@ EmbeddingResult fitIsometricEmbedding(const IntrinsicTriangulation& tri, const E
       const int a = m.tail(h), b = m.tip(h), c = m.tip(HalfedgeMesh::next(h)), d = m.tip(HalfedgeMesh::next(t));
       // Ceres needs four distinct parameter blocks; in a Δ-complex c may equal d (or a, b): skip such edges.
       if (c == d || c == a || c == b || d == a || d == b) continue;
-      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<DihedralResidual, 1, 3, 3, 3, 3>(
-                                   new DihedralResidual(options.regularizerWeight)),
-                               nullptr, &x[3 * a], &x[3 * b], &x[3 * c], &x[3 * d]);
+      problem.AddResidualBlock(
+          new ceres::AutoDiffCostFunction<DihedralResidual, 1, 3, 3, 3, 3>(new DihedralResidual(w)), nullptr, &x[3 * a],
+          &x[3 * b], &x[3 * c], &x[3 * d]);
     }
-    ProgressCallback cb(options.progress, "embed: regularized fit", m.nEdges());
+    ProgressCallback cb(options.progress, "embed: regularized fit (w = " + sci(w, 1) + ")", m.nEdges());
     // The regularized optimum is only a start: its RMS residual is the regularizer's bias (~1e-3 on the ellipsoid), and
     // once LM stops gaining 1e-6 of the cost per step it has reached the basin the second solve needs. Converging it
     // further (to the 1e-15 of the final solve) cost a third of the 20k-vertex fit and most of the 200k one. Stopping
@@ -475,7 +486,7 @@ EmbeddingResult fitIsometricEmbedding(const IntrinsicTriangulation& tri, const E
     // directions, and CG needed as many iterations as with Jacobi (187–500 per step at 20k), each with two triangular
     // solves (docs/benchmarks.md).
     const auto summary = solve(problem, ceres::CGNR, options.maxIterationsRegularized, 1e-6, options.threads, &cb);
-    res.regularizedIterations = static_cast<int>(summary.iterations.size()) - 1;
+    res.regularizedIterations += static_cast<int>(summary.iterations.size()) - 1;
   }
   res.regularizedSeconds = secondsSince(t0);
   const auto t1 = Clock::now();
