@@ -456,7 +456,7 @@ EmbeddingResult fitIsometricEmbedding(const IntrinsicTriangulation& tri, const E
   // through their links — along the normal a vertex's edges change only by ≈ tκ/2, so the linear model asks for moves
   // larger than the vertex's height over its link, ≈ κℓ²/2 — and reached a round-off residual at a non-convex
   // polyhedron (90 edges bent the wrong way); after the w/100 stage its first step is 3e-4 long at 20k. The smaller
-  // weights also cost little: from the previous optimum their CG solves take 20–210 iterations (20k and 50k vertices),
+  // weights also cost little: from the previous optimum their CG solves take 20–250 iterations (20k–100k vertices),
   // not the cap.
   std::vector<double> weights;
   if (options.regularizerWeight > 0)
