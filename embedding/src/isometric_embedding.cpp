@@ -176,19 +176,26 @@ struct EdgeLengthResidual {
   double inverseLength;
 };
 
-// w·(n₁ − n₂) for faces (a, b, c) and (b, a, d) sharing edge ab; the normals are normalized (a zero normal — a
-// degenerate face — makes the residual undefined, so it is skipped by returning false, which LM treats as a rejected
-// step).
+// 2w·sin(β/2) for faces (a, b, c) and (b, a, d) sharing edge ab, β the signed angle between their unit normals n₁, n₂
+// (positive where convex, as in mean_curvature_measure.h). Its square is w²|n₁ − n₂|² (|n₁ − n₂| = 2 sin(|β|/2)), so
+// the regularizer's energy — and the first solve's optimum — is that of the vector residual w·(n₁ − n₂), but in one
+// Jacobian row instead of three: per interior edge the Jacobian holds 6 + 12 entries instead of 6 + 36, and the
+// conjugate-gradient iterations of the first solve, a product with J and one with Jᵀ each, get cheaper in proportion
+// (20 252 vertices: the same 7 + 9 steps, CG iteration counts within 1, the same polyhedron, 39 s CPU instead of 54 s).
+// At β = ±π (a diamond folded flat onto itself) the residual jumps from 2w to −2w, its energy does not. A zero normal
+// or edge (a degenerate face) leaves β undefined: the residual returns false, which LM treats as a
+// rejected step.
 struct DihedralResidual {
   explicit DihedralResidual(double w) : weight(w) {}
   template <typename T>
   bool operator()(const T* a, const T* b, const T* c, const T* d, T* r) const {
     using V = Eigen::Matrix<T, 3, 1>;
     const V A(a[0], a[1], a[2]), B(b[0], b[1], b[2]), C(c[0], c[1], c[2]), D(d[0], d[1], d[2]);
-    const V n1 = (B - A).cross(C - A), n2 = (A - B).cross(D - B);
-    const T l1 = n1.norm(), l2 = n2.norm();
-    if (!(l1 > T(0)) || !(l2 > T(0))) return false;
-    for (int k = 0; k < 3; ++k) r[k] = T(weight) * (n1[k] / l1 - n2[k] / l2);
+    const V e = B - A, n1 = e.cross(C - A), n2 = (A - B).cross(D - B);
+    const T l1 = n1.norm(), l2 = n2.norm(), le = e.norm();
+    if (!(l1 > T(0)) || !(l2 > T(0)) || !(le > T(0))) return false;
+    const T beta = ceres::atan2(n1.cross(n2).dot(e) / (l1 * l2 * le), n1.dot(n2) / (l1 * l2));
+    r[0] = T(2 * weight) * ceres::sin(beta / T(2));
     return true;
   }
   double weight;
@@ -202,7 +209,8 @@ class ProgressCallback : public ceres::IterationCallback {
     if (progress_)
       progress_(stage_ + " iteration " + std::to_string(s.iteration) + ": cost " + sci(s.cost) + " (RMS residual " +
                 sci(std::sqrt(2 * s.cost / edges_)) + "), step " + sci(s.step_norm) +
-                (s.step_is_successful ? "" : " rejected"));
+                (s.step_is_successful ? "" : " rejected") + ", " + std::to_string(s.linear_solver_iterations) +
+                " linear-solver iterations, trust region " + sci(s.trust_region_radius));
     return ceres::SOLVER_CONTINUE;
   }
 
@@ -441,7 +449,19 @@ EmbeddingResult fitIsometricEmbedding(const IntrinsicTriangulation& tri, const E
   };
 
   t0 = Clock::now();
-  if (options.regularizerWeight > 0) {
+  // Continuation in the weight: w, w/10, w/100, each stage started at the previous one's optimum, then the pure fit.
+  // The regularizer's bias (its optimum's distance from the realization) shrinks with w, so the pure fit starts next
+  // to the realization instead of a bias away from it. Started from the w = 1 optimum directly, the pure fit's first,
+  // nearly undamped Gauss–Newton steps (at 50 412 vertices of length 0.18 over all 3V coordinates) popped vertices
+  // through their links — along the normal a vertex's edges change only by ≈ tκ/2, so the linear model asks for moves
+  // larger than the vertex's height over its link, ≈ κℓ²/2 — and reached a round-off residual at a non-convex
+  // polyhedron (90 edges bent the wrong way); after the w/100 stage its first step is 3e-4 long at 20k. The smaller
+  // weights also cost little: from the previous optimum their CG solves take 20–250 iterations (20k–100k vertices),
+  // not the cap.
+  std::vector<double> weights;
+  if (options.regularizerWeight > 0)
+    weights = {options.regularizerWeight, options.regularizerWeight / 10, options.regularizerWeight / 100};
+  for (const double w : weights) {
     ceres::Problem problem(po);
     addEdges(problem);
     for (int e = 0; e < m.nEdges(); ++e) {
@@ -450,16 +470,24 @@ EmbeddingResult fitIsometricEmbedding(const IntrinsicTriangulation& tri, const E
       const int a = m.tail(h), b = m.tip(h), c = m.tip(HalfedgeMesh::next(h)), d = m.tip(HalfedgeMesh::next(t));
       // Ceres needs four distinct parameter blocks; in a Δ-complex c may equal d (or a, b): skip such edges.
       if (c == d || c == a || c == b || d == a || d == b) continue;
-      problem.AddResidualBlock(new ceres::AutoDiffCostFunction<DihedralResidual, 3, 3, 3, 3, 3>(
-                                   new DihedralResidual(options.regularizerWeight)),
-                               nullptr, &x[3 * a], &x[3 * b], &x[3 * c], &x[3 * d]);
+      problem.AddResidualBlock(
+          new ceres::AutoDiffCostFunction<DihedralResidual, 1, 3, 3, 3, 3>(new DihedralResidual(w)), nullptr, &x[3 * a],
+          &x[3 * b], &x[3 * c], &x[3 * d]);
     }
-    ProgressCallback cb(options.progress, "embed: regularized fit", m.nEdges());
+    ProgressCallback cb(options.progress, "embed: regularized fit (w = " + sci(w, 1) + ")", m.nEdges());
     // The regularized optimum is only a start: its RMS residual is the regularizer's bias (~1e-3 on the ellipsoid), and
     // once LM stops gaining 1e-6 of the cost per step it has reached the basin the second solve needs. Converging it
-    // further (to the 1e-15 of the final solve) cost a third of the 20k-vertex fit and most of the 200k one.
+    // further (to the 1e-15 of the final solve) cost a third of the 20k-vertex fit and most of the 200k one. Stopping
+    // sooner is not safe: at 20 252 vertices a stop at 1e-2 (5 steps instead of 7; the two skipped steps have norm 0.08
+    // over all 3V coordinates) led the second solve to a different polyhedron with the same lengths (Procrustes
+    // RMS 3.584e-5 against the convex one's 3.572e-5). Jacobi rather than Ceres' SUBSET preconditioner on the edge
+    // terms: the edge-only JᵀJ barely resists normal motion (an edge leaves the tangent plane at angle ≈ κℓ/2, so a
+    // vertex moved by t along the normal changes its edges by ≈ tκ/2 relative, against ≈ t/ℓ for the dihedral terms),
+    // so the preconditioned matrix keeps eigenvalues up to ≈ w²/(κℓ)² (≈ 10³ at 20k vertices) on all V normal
+    // directions, and CG needed as many iterations as with Jacobi (187–500 per step at 20k), each with two triangular
+    // solves (docs/benchmarks.md).
     const auto summary = solve(problem, ceres::CGNR, options.maxIterationsRegularized, 1e-6, options.threads, &cb);
-    res.regularizedIterations = static_cast<int>(summary.iterations.size()) - 1;
+    res.regularizedIterations += static_cast<int>(summary.iterations.size()) - 1;
   }
   res.regularizedSeconds = secondsSince(t0);
   const auto t1 = Clock::now();
