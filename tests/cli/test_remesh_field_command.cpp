@@ -19,26 +19,20 @@
 
 namespace fs = std::filesystem;
 using namespace conformesh::intrinsic;
-
-namespace {
-using Run = conformesh::testing::CliRun;
-fs::path dir() {
-  return conformesh::testing::scratchDir();
-}
-}  // namespace
+using conformesh::testing::runConformesh;
 
 TEST_CASE("remesh --field: the Kerr horizon a = 0.95 as an HDF5 field, finite curvature at the poles") {
   const double a = 0.95;
   const KerrNewmanMetric kerr(1, a, 0);
   const SampledField field = sampleMetric(kerr, 128, 64);
-  const fs::path h5 = dir() / "kerr_field.h5", txt = dir() / "kerr_field.txt";
+  const fs::path dir = conformesh::testing::scratchDir(), h5 = dir / "kerr_field.h5", txt = dir / "kerr_field.txt";
   writeSampledFieldHdf5(field, h5.string(), "/horizons/AhA");
   std::ofstream(txt) << formatSampledField(field);
 
-  const fs::path out = dir() / "kerr_field_h5.ply", outText = dir() / "kerr_field_txt.ply";
+  const fs::path out = dir / "kerr_field_h5.ply", outText = dir / "kerr_field_txt.ply";
   const std::string common = " --eps 0.2 --no-check --json -o ";
-  Run r =
-      conformesh::testing::runConformesh("-q remesh --field " + h5.string() + ":/horizons/AhA" + common + out.string());
+  conformesh::testing::CliRun r =
+      runConformesh("-q remesh --field " + h5.string() + ":/horizons/AhA" + common + out.string());
   INFO(r.err);
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
@@ -57,7 +51,7 @@ TEST_CASE("remesh --field: the Kerr horizon a = 0.95 as an HDF5 field, finite cu
   }
   CHECK(poles == 2);  // T0 of a sphere chart has a vertex at each pole
 
-  r = conformesh::testing::runConformesh("-q remesh --field " + txt.string() + common + outText.string());
+  r = runConformesh("-q remesh --field " + txt.string() + common + outText.string());
   INFO(r.err);
   REQUIRE(r.status == 0);
   const auto jt = nlohmann::json::parse(r.out);
