@@ -213,9 +213,9 @@ void check(herr_t status, const std::string& what) {
 // =====================================================================================================================
 // public functions
 
-bool isHdf5File(const std::string& path) {
+bool isHdf5File(const std::string& pathAndGroup) {
   static const unsigned char kSignature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(splitGroup(pathAndGroup).first, std::ios::binary);
   unsigned char head[8] = {0};
   return in.read(reinterpret_cast<char*>(head), 8) && std::memcmp(head, kSignature, 8) == 0;
 }

@@ -182,9 +182,7 @@ void markPoleToPole(SampledField& f, const std::string& where) {
 
 SampledField readSampledField(const std::string& path) {
   // A file with the HDF5 signature (or FILE:/group naming one) is read as HDF5, whatever its extension.
-  if (isHdf5File(path) ||
-      (!std::ifstream(path) && path.rfind(':') != std::string::npos && isHdf5File(path.substr(0, path.rfind(':')))))
-    return readSampledFieldHdf5(path);
+  if (isHdf5File(path)) return readSampledFieldHdf5(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the metric field file");
   std::ostringstream s;

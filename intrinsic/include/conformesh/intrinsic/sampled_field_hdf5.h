@@ -19,8 +19,9 @@
 
 namespace conformesh::intrinsic {
 
-// Whether the file at `path` (without a ":/group" suffix) starts with the HDF5 signature \x89HDF\r\n\x1a\n.
-bool isHdf5File(const std::string& path);
+// Whether the file at `path`, or at FILE of `FILE:/group` (when FILE exists and the whole string does not), starts
+// with the HDF5 signature \x89HDF\r\n\x1a\n.
+bool isHdf5File(const std::string& pathAndGroup);
 
 // Reads `path`, or `path:/group` for a field stored in a group other than the root. The samples are checked by
 // SampledMetric's constructor as for the text format; this reader checks the layout, the shapes, the attributes and
