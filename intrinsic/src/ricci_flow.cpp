@@ -14,8 +14,11 @@
 #include <limits>
 #include <memory>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "conformesh/intrinsic/errors.h"
+#include "fill_reducing_order.h"
 #include "two_threads.h"
 
 namespace conformesh::intrinsic {
@@ -266,10 +269,30 @@ class SymmetricAssembly {
   std::vector<double> value_;  // 6 per face (kPair)
 };
 
-// Eigen's CHOLMOD wrapper with access to the factor it holds (for SinglePrecisionFactor).
+// Eigen's CHOLMOD wrapper with access to the factor it holds (for SinglePrecisionFactor), and a symbolic analysis in a
+// given elimination order (nestedDissectionOrder at large sizes, fill_reducing_order.h).
 class SupernodalCholesky : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
  public:
   const cholmod_factor* factor() const { return m_cholmodFactor; }
+
+  using Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>::analyzePattern;
+  // As Eigen's analyzePattern, with CHOLMOD told to use `order` (perm[k] = the k-th unknown eliminated), postordered
+  // by the elimination tree as CHOLMOD does its own orders.
+  void analyzePattern(const SparseMatrix& lower, std::vector<int> order) {
+    cholmod_common& common = cholmod();
+    if (m_cholmodFactor != nullptr) cholmod_free_factor(&m_cholmodFactor, &common);
+    cholmod_sparse A = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
+    const int methods = common.nmethods, ordering = common.method[0].ordering;
+    common.nmethods = 1;
+    common.method[0].ordering = CHOLMOD_GIVEN;
+    m_cholmodFactor = cholmod_analyze_p(&A, order.data(), nullptr, 0, &common);
+    common.nmethods = methods;
+    common.method[0].ordering = ordering;
+    m_isInitialized = true;
+    m_info = m_cholmodFactor != nullptr ? Eigen::Success : Eigen::NumericalIssue;
+    m_analysisIsOk = m_cholmodFactor != nullptr;
+    m_factorizationIsOk = false;
+  }
 };
 
 // The preconditioner of the conjugate gradients: CHOLMOD's supernodal factor P H Pᵀ = L Lᵀ with L rounded to single
@@ -479,13 +502,14 @@ class SinglePrecisionFactor {
 // the few rows a flip touches), so the previous factor is an excellent preconditioner: conjugate gradients with it
 // converge in a handful of iterations, and a new factorization is only computed when they do not reach the requested
 // relative residual within `maxIterations` (then the factor is refreshed and the solve is direct). The iterations apply
-// the factor in single precision on two cores (SinglePrecisionFactor). The sparsity analysis — CHOLMOD's fill-reducing
-// ordering, METIS nested dissection at 10⁶ unknowns: ≈ 9 s, as much as the factorization — is redone only when flips
-// changed the pattern. Consecutive solves may share it (RicciFlowOptions::solverCache) when their unknowns keep their
-// number.
+// the factor in single precision on two cores (SinglePrecisionFactor). The sparsity analysis — the fill-reducing
+// ordering (CHOLMOD's choice, or METIS nested dissection from RicciFlowOptions::nestedDissectionMin unknowns on: ≈ 6 s
+// at 10⁶, as much as the factorization) and the supernodal symbolic factorization — is redone only when flips changed
+// the pattern. Consecutive solves may share it (RicciFlowOptions::solverCache) when their unknowns keep their number.
 class FlowSolverCache {
  public:
-  explicit FlowSolverCache(int maxIterations) : maxIterations_(maxIterations) {}
+  FlowSolverCache(int maxIterations, int nestedDissectionMin)
+      : maxIterations_(maxIterations), nestedDissectionMin_(nestedDissectionMin) {}
   void patternChanged() { patternValid_ = false; }
   // A factor of another dimension cannot precondition: forget it.
   void setDimension(int n) {
@@ -494,12 +518,21 @@ class FlowSolverCache {
   }
   int factorizations() const { return factorizations_; }
   int cgIterations() const { return cgIterations_; }
+  bool nestedDissection() const { return nestedDissection_; }
 
   // Returns false when the factorization fails (H not positive definite).
   bool solve(const SparseMatrix& H, const Eigen::VectorXd& b, double relativeTolerance, Eigen::VectorXd& x) {
     if (haveFactor_ && maxIterations_ > 0 && preconditionedCG(H, b, relativeTolerance, x)) return true;
     if (!patternValid_) {
-      solver_.analyzePattern(H);
+      nestedDissection_ = H.rows() >= nestedDissectionMin_;
+      if (nestedDissection_)
+        solver_.analyzePattern(H, nestedDissectionOrder(H));
+      else
+        solver_.analyzePattern(H);
+      if (solver_.factor() == nullptr)
+        throw ConvergenceError("discrete Ricci flow: CHOLMOD's symbolic analysis of the " + std::to_string(H.rows()) +
+                               "-unknown Newton system failed (CHOLMOD status " +
+                               std::to_string(solver_.cholmod().status) + "; −2 is out of memory)");
       patternValid_ = true;
       analysed_ = false;
     }
@@ -547,9 +580,9 @@ class FlowSolverCache {
 
   SupernodalCholesky solver_;
   SinglePrecisionFactor single_;
-  int maxIterations_;
+  int maxIterations_, nestedDissectionMin_;
   int dimension_ = -1;
-  bool patternValid_ = false, haveFactor_ = false, analysed_ = false;
+  bool patternValid_ = false, haveFactor_ = false, analysed_ = false, nestedDissection_ = false;
   int factorizations_ = 0, cgIterations_ = 0;
 };
 
@@ -612,8 +645,8 @@ InscribedPolygon inscribedPolygon(const std::vector<double>& sides, int loop) {
   return out;
 }
 
-std::shared_ptr<FlowSolverCache> makeFlowSolverCache(int maxReuseIterations) {
-  return std::make_shared<FlowSolverCache>(maxReuseIterations);
+std::shared_ptr<FlowSolverCache> makeFlowSolverCache(int maxReuseIterations, int nestedDissectionMin) {
+  return std::make_shared<FlowSolverCache>(maxReuseIterations, nestedDissectionMin);
 }
 
 std::vector<double> flowAngleSums(const DiscreteConformalMetric& metric) {
@@ -835,7 +868,7 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
         (circleFailure.empty() ? std::string("the initial angle sums are not finite") : circleFailure));
   report.maxResidual = maxAbs;
 
-  FlowSolverCache local(options.maxReuseIterations);
+  FlowSolverCache local(options.maxReuseIterations, options.nestedDissectionMin);
   FlowSolverCache& solver = shared ? *options.solverCache : local;
   solver.setDimension(n);
   const int factorizationsBefore = solver.factorizations(), cgBefore = solver.cgIterations();
@@ -1053,6 +1086,7 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
   report.maxResidual = maxAbs;
   report.factorizations = solver.factorizations() - factorizationsBefore;
   report.cgIterations = solver.cgIterations() - cgBefore;
+  report.nestedDissection = solver.nestedDissection();
   if (report.stoppedAtDegenerate) {
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;

@@ -488,7 +488,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   // "Solve, repair, solve again": the first solves return as soon as a degenerate face stalls the line search (the
   // energy is only C¹ there), so the star is repaired early instead of after several short Newton steps.
   flow.returnAtDegenerateStall = true;
-  flow.solverCache = makeFlowSolverCache(flow.maxReuseIterations);
+  flow.solverCache = makeFlowSolverCache(flow.maxReuseIterations, flow.nestedDissectionMin);
   for (int round = 0;; ++round) {
     const RicciFlowReport solved = solveConformalFlow(metric, target, flow, &log);
     accumulate(report, solved);

@@ -66,7 +66,7 @@ struct NewtonStepInfo {
 // preconditions the next solve's conjugate gradients (the genus-0 construction solves, repairs the puncture's star
 // and solves again; without sharing, each solve analyses and factors anew). Defined in ricci_flow.cpp.
 class FlowSolverCache;
-std::shared_ptr<FlowSolverCache> makeFlowSolverCache(int maxReuseIterations = 20);
+std::shared_ptr<FlowSolverCache> makeFlowSolverCache(int maxReuseIterations = 20, int nestedDissectionMin = 300000);
 
 struct RicciFlowOptions {
   // Stop when max_i |Θ̂_i − Θ_i| ≤ tolerance (radians). 1e-10 is reachable in double precision up to ~10⁵ vertices;
@@ -81,6 +81,13 @@ struct RicciFlowOptions {
   // Newton systems after the first are solved by conjugate gradients preconditioned with the last Cholesky factor;
   // when they do not converge in this many iterations the Hessian is factored anew (0: factor at every step).
   int maxReuseIterations = 20;
+  // From this many unknowns on, the Newton systems are ordered for the Cholesky factorization by METIS nested
+  // dissection with one refinement pass per level (called directly); below, by CHOLMOD's default choice (AMD, plus
+  // METIS with ten passes when AMD's fill is large). Measured on the genus-0 box (docs/benchmarks.md): at 10⁵ unknowns
+  // CHOLMOD keeps AMD, and METIS would cost 0.5 s to save ≈ 0.1 s of factorization; at 10⁶ CHOLMOD's analysis takes
+  // ≈ 9 s (AMD, then METIS), the direct call 5.5 s of METIS for 1.5 % more factorization flops. The order only changes
+  // round-off, not the solution (the stopping test is on the residual).
+  int nestedDissectionMin = 300000;
   // Optional: share the factor with other solves (makeFlowSolverCache). Dirichlet vertices then stay unknowns with
   // identity rows, so that changes of the Dirichlet set keep the dimension. Ignored for circle loops.
   std::shared_ptr<FlowSolverCache> solverCache;
@@ -113,6 +120,7 @@ struct RicciFlowReport {
   int factorizations = 0;            // sparse Cholesky factorizations (symmetric problems)
   int cgIterations = 0;              // preconditioned conjugate-gradient iterations that reused a factor
   bool stoppedAtDegenerate = false;  // returned early by returnAtDegenerateStall (not converged)
+  bool nestedDissection = false;     // the last analysis used METIS nested dissection (nestedDissectionMin)
 };
 
 // Checks the target (sizes, finite, Θ̂ > 0 at free vertices, Gauss–Bonnet for closed Euclidean problems without frozen
