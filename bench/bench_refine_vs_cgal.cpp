@@ -251,15 +251,23 @@ int belowSqrt2(double B) {
   return 0;
 }
 
+// Growth of each tool's CPU time with the vertex count, one fresh process per row. CGAL's rows (when built with it)
+// use its size bound sqrt(6/V), which lands near V vertices without calibration: a peer on the same machine, to tell
+// the machine's memory hierarchy from the algorithm's growth.
 int scaling() {
-  std::printf("| vertices | CPU s    | µs per vertex | µs per (vertex·log2 V) | peak MiB |\n");
-  std::printf("|---------:|---------:|--------------:|-----------------------:|---------:|\n");
-  for (long target : {10000L, 100000L, 1000000L}) {
-    const double eps = std::sqrt(1.75 / target);  // V ≈ 1.75/ε² for this disk (measured), no calibration needed
-    const auto m = measure("conformesh", eps, 1);
+  std::printf("| tool | vertices | CPU s    | µs per vertex | µs per (vertex·log2 V) | peak MiB |\n");
+  std::printf("|------|---------:|---------:|--------------:|-----------------------:|---------:|\n");
+  auto row = [](const char* name, const std::pair<Outcome, double>& m) {
     const double us = 1e6 * m.first.seconds / m.first.vertices;
-    std::printf("| %8ld | %8.3f | %13.3f | %22.4f | %8.1f |\n", m.first.vertices, m.first.seconds, us,
-                us / std::log2(double(m.first.vertices)), m.second);
+    std::printf("| %s | %8ld | %8.3f | %13.3f | %22.4f | %8.1f |\n", name, static_cast<long>(m.first.vertices),
+                m.first.seconds, us, us / std::log2(double(m.first.vertices)), m.second);
+    std::fflush(stdout);
+  };
+  for (long target : {10000L, 100000L, 1000000L}) {
+    row("conformesh", measure("conformesh", std::sqrt(1.75 / target), 1));  // V ≈ 1.75/ε² for this disk (measured)
+#ifdef CONFORMESH_HAVE_CGAL
+    row("CGAL 5.5", measure("cgal", std::sqrt(6.0 / target), 1));
+#endif
   }
   return 0;
 }

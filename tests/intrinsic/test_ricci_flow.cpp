@@ -24,6 +24,23 @@ ConformalTarget flatTarget(const HalfedgeMesh& m) {
   return t;
 }
 
+// A 960-vertex torus of revolution (120 × 8) with long thin triangles (n ≫ m·R/r) and random length perturbations of
+// up to 30 %, which leave needles and caps with angles near π (the perturbation stays within the triangle inequality).
+IntrinsicTriangulation perturbedTorus() {
+  TorusOptions options;
+  options.n = 120;
+  options.m = 8;
+  MeshData data = makeTorus(options);
+  perturbLengths(data, 0.3, 11);
+  return toTriangulation(data);
+}
+
+double maxAbsDifference(const std::vector<double>& a, const std::vector<double>& b) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  return d;
+}
+
 }  // namespace
 
 TEST_CASE("inadmissible targets are reported, naming the vertex or the imbalance") {
@@ -55,14 +72,7 @@ TEST_CASE("a flow stopped early reports the residual it reached") {
 }
 
 TEST_CASE("obtuse and near-degenerate inputs converge through Ptolemy flips, quadratically") {
-  // A torus of revolution with long thin triangles (n ≫ m·R/r) and random length perturbations, which leave needles
-  // and caps with angles near π (the perturbation stays within the triangle inequality).
-  TorusOptions options;
-  options.n = 120;
-  options.m = 8;
-  MeshData data = makeTorus(options);
-  perturbLengths(data, 0.3, 11);
-  const IntrinsicTriangulation input = toTriangulation(data);
+  const IntrinsicTriangulation input = perturbedTorus();
   double maxAngle = 0;
   for (int h = 0; h < input.mesh.nHalfedges(); ++h) maxAngle = std::max(maxAngle, cornerAngle(input, h));
   INFO("largest input angle " << maxAngle);
@@ -135,12 +145,7 @@ TEST_CASE("the Penner Delaunay margin agrees with the angle test on valid triang
 }
 
 TEST_CASE("a reused Cholesky factor preconditioning conjugate gradients keeps the solution, saves factorizations") {
-  TorusOptions options;
-  options.n = 120;
-  options.m = 8;
-  MeshData data = makeTorus(options);
-  perturbLengths(data, 0.3, 11);
-  const IntrinsicTriangulation input = toTriangulation(data);
+  const IntrinsicTriangulation input = perturbedTorus();
   DiscreteConformalMetric reused(input, Background::Euclidean), direct(input, Background::Euclidean);
   const RicciFlowReport a = solveConformalFlow(reused, flatTarget(input.mesh));
   RicciFlowOptions everyStep;
@@ -155,21 +160,14 @@ TEST_CASE("a reused Cholesky factor preconditioning conjugate gradients keeps th
   // Both stop within 1e-10 rad of the unique solution (same gauge vertex); the inverse cotangent Laplacian of this
   // 960-vertex torus amplifies angle residuals by at most ~10³ (its smallest non-zero eigenvalue is ~(2π/L)² with L the
   // torus length 2π(R + r)), so the conformal factors agree to 1e-7.
-  double maxDiff = 0;
-  for (int v = 0; v < input.mesh.nVertices(); ++v) maxDiff = std::max(maxDiff, std::abs(reused.u()[v] - direct.u()[v]));
-  CHECK(maxDiff < 1e-7);
+  CHECK(maxAbsDifference(reused.u(), direct.u()) < 1e-7);
 }
 
 TEST_CASE("METIS nested dissection (RicciFlowOptions::nestedDissectionMin) keeps the solution of CHOLMOD's ordering") {
-  // The same perturbed torus as above, once ordered by CHOLMOD's default choice (AMD at this size) and once by the
+  // The perturbed torus, once ordered by CHOLMOD's default choice (AMD at this size) and once by the
   // direct METIS call that large systems use; both also precondition conjugate gradients with the factor in single
   // precision, whose supernode tree is then the one of the given (postordered) order.
-  TorusOptions options;
-  options.n = 120;
-  options.m = 8;
-  MeshData data = makeTorus(options);
-  perturbLengths(data, 0.3, 11);
-  const IntrinsicTriangulation input = toTriangulation(data);
+  const IntrinsicTriangulation input = perturbedTorus();
   DiscreteConformalMetric byCholmod(input, Background::Euclidean), byMetis(input, Background::Euclidean);
   const RicciFlowReport a = solveConformalFlow(byCholmod, flatTarget(input.mesh));
   RicciFlowOptions metis;
@@ -184,10 +182,7 @@ TEST_CASE("METIS nested dissection (RicciFlowOptions::nestedDissectionMin) keeps
   const std::vector<double> sums = angleSums(byMetis.triangulation());
   for (int v = 0; v < input.mesh.nVertices(); ++v) CHECK(std::abs(sums[v] - 2 * M_PI) < 1e-10);
   // Within 1e-10 rad of the unique solution both: the conformal factors agree to 1e-7 (the bound of the test above).
-  double maxDiff = 0;
-  for (int v = 0; v < input.mesh.nVertices(); ++v)
-    maxDiff = std::max(maxDiff, std::abs(byCholmod.u()[v] - byMetis.u()[v]));
-  CHECK(maxDiff < 1e-7);
+  CHECK(maxAbsDifference(byCholmod.u(), byMetis.u()) < 1e-7);
 }
 
 TEST_CASE("a solver cache shared by Dirichlet problems with different fixed sets gives the uncached solutions") {
