@@ -173,11 +173,12 @@ BENCHMARK(BM_FitEllipsoid)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
 
-// Coarse N = 20 (4002 vertices) → 45; 35 (12 252) → 71; 45 → 100 → 141.
+// Coarse N = 20 (4002 vertices) → 45; 35 (12 252) → 71; 45 → 100 → 141, and 45 → 141 without the intermediate level.
 BENCHMARK(BM_FitEllipsoidCoarseToFine)
     ->Args({20, 45, 0})
     ->Args({35, 71, 0})
     ->Args({45, 100, 141})
+    ->Args({45, 141, 0})
     ->Iterations(1)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();

@@ -2,7 +2,9 @@
 // chart both were discretized on: each fine vertex's chart point is located in the coarse mesh's chart triangulation
 // and its position interpolated barycentrically from the coarse face's three fitted positions. The result is a start
 // for fitIsometricEmbedding (isometric_embedding.h) that uses no true positions, only the common parameter domain of
-// the two discretizations; docs/embedding.md explains why the pure fit from it reaches the convex realization.
+// the two discretizations. It is flat inside each coarse face, where edge lengths do not tell a fine vertex to which
+// side to bend, so the fine fit should take a few weakly regularized steps before the pure fit (regularizerWeight =
+// 0.01, maxIterationsRegularized = 1; from w = 0 directly it popped vertices): docs/embedding.md.
 //
 // Charts handled (`ChartSurface`), as discretizeMetric (metric_discretization.h) builds them on the pole-free reference
 // surface of the chart (smooth_metric.h: referencePoint):
