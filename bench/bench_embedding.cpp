@@ -173,7 +173,8 @@ BENCHMARK(BM_FitEllipsoid)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
 
-// Coarse N = 20 (4002 vertices) → 45; 35 (12 252) → 71; 45 → 100 → 141, and 45 → 141 without the intermediate level.
+// Coarse N = 20 (4002 vertices) → 45; 35 (12 252) → 71; 45 → 100 → 141; and 45 → 141, which skips the intermediate
+// level and ends at a popped polyhedron (docs/benchmarks.md): a coarse-to-fine step should at most about halve h.
 BENCHMARK(BM_FitEllipsoidCoarseToFine)
     ->Args({20, 45, 0})
     ->Args({35, 71, 0})

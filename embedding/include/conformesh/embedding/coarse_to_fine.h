@@ -4,7 +4,9 @@
 // for fitIsometricEmbedding (isometric_embedding.h) that uses no true positions, only the common parameter domain of
 // the two discretizations. It is flat inside each coarse face, where edge lengths do not tell a fine vertex to which
 // side to bend, so the fine fit should take a few weakly regularized steps before the pure fit (regularizerWeight =
-// 0.01, maxIterationsRegularized = 1; from w = 0 directly it popped vertices): docs/embedding.md.
+// 0.01, maxIterationsRegularized = 1; from w = 0 directly it popped vertices), and each level should refine h by at
+// most about 2× (45 → 141 directly popped vertices, 45 → 100 → 141 did not; the full continuation instead of one
+// step per stage also works, at 1.5× the cost): docs/embedding.md.
 //
 // Charts handled (`ChartSurface`), as discretizeMetric (metric_discretization.h) builds them on the pole-free reference
 // surface of the chart (smooth_metric.h: referencePoint):
