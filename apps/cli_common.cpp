@@ -1,9 +1,11 @@
 // cli_common.cpp — shared plumbing of the conformesh subcommands (see cli_common.h).
 #include "cli_common.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh_io.h"
@@ -26,6 +28,18 @@ void progress(const std::string& what) {
 
 void setQuiet(bool quiet) {
   gQuiet = quiet;
+}
+
+std::function<void(int, int)> countingProgress(const std::string& what) {
+  using Clock = std::chrono::steady_clock;
+  auto last = std::make_shared<Clock::time_point>(Clock::now());
+  return [what, last](int done, int total) {
+    const auto now = Clock::now();
+    if (done >= total || now - *last < std::chrono::seconds(5)) return;
+    *last = now;
+    progress(what + ": " + std::to_string(done) + " of " + std::to_string(total) + " (" +
+             std::to_string(static_cast<int>(100.0 * done / total)) + " %)");
+  };
 }
 
 intrinsic::MeshData loadMesh(const std::string& path) {

@@ -28,6 +28,9 @@ void printJson(const nlohmann::json& j);
 // A progress line on stderr ("conformesh: <what>"), unless quiet mode is on (--quiet on the root command).
 void progress(const std::string& what);
 void setQuiet(bool quiet);
+// A (done, total) callback for long loops that prints "conformesh: <what>: done of total (p %)" through progress(), at
+// most every 5 seconds (and never for a loop that ends sooner).
+std::function<void(int, int)> countingProgress(const std::string& what);
 
 // Reads a mesh file, or throws InputError naming it.
 intrinsic::MeshData loadMesh(const std::string& path);

@@ -80,6 +80,7 @@ void run(const RemeshArgs& a) {
   if (!a.noCheck) {
     progress("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
     intrinsic::CurvatureMeasureOptions co;
+    co.progress = countingProgress("curvature measure");
     co.region = a.region == "union" ? intrinsic::MeasureRegion::TriangleUnion : intrinsic::MeasureRegion::GeodesicBall;
     const intrinsic::CurvatureMeasureResult c = intrinsic::gaussianCurvatureMeasure(r.mesh, r.reference, *metric, co);
     j["gaussian_curvature_measure"] = curvatureMeasureJson(c, co);

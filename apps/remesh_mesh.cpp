@@ -74,7 +74,8 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
   }
   if (!a.noCheck) {
     progress("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
-    const intrinsic::CurvatureMeasureOptions co;
+    intrinsic::CurvatureMeasureOptions co;
+    co.progress = countingProgress("curvature measure");
     const intrinsic::CurvatureMeasureResult c = refine::meshCurvatureMeasure(r, in.triangulation, co);
     j["gaussian_curvature_measure"] = curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);

@@ -469,6 +469,7 @@ CurvatureMeasureResult gaussianCurvatureMeasure(const IntrinsicTriangulation& me
     r.smooth[v] = b.smooth;
     r.absoluteScale[v] = b.absoluteScale;
     r.relativeError[v] = b.absoluteScale > 0 ? (b.discrete - b.smooth) / b.absoluteScale : 0.0;
+    if (options.progress && ((v + 1) % ((nV + 99) / 100) == 0 || v + 1 == nV)) options.progress(v + 1, nV);
   }
 
   // === statistics

@@ -892,6 +892,7 @@ CurvatureMeasureResult meshCurvatureMeasure(const MeshRemeshResult& r, const Int
     const double x = (c.relativeError[v] + options.histogramRange) / (2 * options.histogramRange);
     const int bin = std::clamp(static_cast<int>(std::floor(x * options.histogramBins)), 0, options.histogramBins - 1);
     ++c.histogram[bin];
+    if (options.progress && ((v + 1) % ((n + 99) / 100) == 0 || v + 1 == n)) options.progress(v + 1, n);
   }
   c.fractionWithinBand = n > 0 ? static_cast<double>(within) / n : 0.0;
   return c;

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -77,6 +79,25 @@ TEST_CASE("the triangles' images tile the surface: Σ ∫K dA = 2πχ") {
     const CurvatureMeasureResult r = gaussianCurvatureMeasure(d.tri, d.reference, *m);
     CHECK(r.smoothTotalCurvature == Approx(2 * M_PI * m->domain().eulerCharacteristic()).margin(1e-9));
   }
+}
+
+TEST_CASE("progress is reported after every hundredth of the balls and at the end, without changing the result") {
+  const EllipsoidMetric ellipsoid(1.0, 0.3);
+  const Discretized d = discretize(ellipsoid, 12);
+  const int nV = d.tri.mesh.nVertices();
+  std::vector<std::pair<int, int>> calls;
+  CurvatureMeasureOptions o;
+  o.progress = [&](int done, int total) { calls.emplace_back(done, total); };
+  const CurvatureMeasureResult with = gaussianCurvatureMeasure(d.tri, d.reference, ellipsoid, o);
+  const CurvatureMeasureResult without = gaussianCurvatureMeasure(d.tri, d.reference, ellipsoid);
+  REQUIRE(!calls.empty());
+  CHECK(calls.size() <= 101);
+  CHECK(calls.back() == std::make_pair(nV, nV));
+  for (std::size_t i = 0; i < calls.size(); ++i) {
+    CHECK(calls[i].second == nV);
+    if (i > 0) CHECK(calls[i].first > calls[i - 1].first);
+  }
+  CHECK(with.meanAbsoluteError == without.meanAbsoluteError);
 }
 
 TEST_CASE("the Gaussian curvature measure converges at first order, with the order fitted") {
