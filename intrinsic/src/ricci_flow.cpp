@@ -474,9 +474,8 @@ class SinglePrecisionFactor {
     }
   }
   // Σ a_i b_i in eight interleaved partial sums added in a fixed order: a single running sum is one dependent chain of
-  // additions (latency-bound: the backward solve's dot products ran at a quarter of the forward solve's column
-  // updates), eight independent chains keep the floating-point units busy. The order is fixed, so the result is
-  // deterministic.
+  // additions, bound by the latency of each addition; eight independent chains are not (measured at 10⁵ vertices, box
+  // → sphere: the two solve kernels 0.70·10⁹ → 0.56·10⁹ cycles). The order is fixed, so the result is deterministic.
   static double dot(const float* a, const double* b, int n) {
     double part[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     int i = 0;
