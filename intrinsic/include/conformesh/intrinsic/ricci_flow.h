@@ -85,8 +85,8 @@ struct RicciFlowOptions {
   // dissection with one refinement pass per level (called directly); below, by CHOLMOD's default choice (AMD, plus
   // METIS with ten passes when AMD's fill is large). Measured on the genus-0 box (docs/benchmarks.md): at 10⁵ unknowns
   // CHOLMOD keeps AMD, and METIS would cost 0.5 s to save ≈ 0.1 s of factorization; at 10⁶ CHOLMOD's analysis takes
-  // ≈ 9 s (AMD, then METIS), the direct call 5.5 s of METIS for 1.5 % more factorization flops. The order only changes
-  // round-off, not the solution (the stopping test is on the residual).
+  // ≈ 9 s (AMD, then METIS), the direct call 5.4–6.4 s of METIS for 1.5 % more factorization flops. The order only
+  // changes round-off, not the solution (the stopping test is on the residual).
   int nestedDissectionMin = 300000;
   // Optional: share the factor with other solves (makeFlowSolverCache). Dirichlet vertices then stay unknowns with
   // identity rows, so that changes of the Dirichlet set keep the dimension. Ignored for circle loops.
