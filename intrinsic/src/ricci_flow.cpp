@@ -1088,12 +1088,16 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
     ++report.newtonSteps;
     report.maxResidual = maxAbs;
     if (options.onStep) options.onStep(info);
+    if (options.stopAfterStep && maxAbs > report.effectiveTolerance && options.stopAfterStep(sums, maxAbs)) {
+      report.stoppedByCaller = true;
+      break;
+    }
   }
   report.maxResidual = maxAbs;
   report.factorizations = solver.factorizations() - factorizationsBefore;
   report.cgIterations = solver.cgIterations() - cgBefore;
   report.nestedDissection = solver.nestedDissection();
-  if (report.stoppedAtDegenerate) {
+  if (report.stoppedAtDegenerate || report.stoppedByCaller) {
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
   }

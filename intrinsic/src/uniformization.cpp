@@ -387,6 +387,21 @@ double sphericalDistance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return 2 * std::asin(std::min(1.0, 0.5 * (a - b).norm()));
 }
 
+// Which of the reflex link vertices (in link order) leave the link in one round: no two consecutive on the link (their
+// spokes share a face, one flip would destroy the other's quad), and the link keeps at least 3 vertices.
+std::vector<int> releasableLinkVertices(const std::vector<int>& link, const std::vector<int>& reflex) {
+  const std::size_t degree = link.size();
+  std::vector<int> chosen;
+  for (std::size_t s = 0; s < degree; ++s) {
+    const bool prevChosen = !chosen.empty() && chosen.back() == link[(s + degree - 1) % degree];
+    const bool wrapsToFirst = s + 1 == degree && !chosen.empty() && chosen.front() == link[0];
+    if (std::find(reflex.begin(), reflex.end(), link[s]) != reflex.end() && !prevChosen && !wrapsToFirst &&
+        degree - chosen.size() > 3)
+      chosen.push_back(link[s]);
+  }
+  return chosen;
+}
+
 struct SphereAttempt {
   bool ok = false;
   std::string why;
@@ -489,11 +504,28 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   // energy is only C¹ there), so the star is repaired early instead of after several short Newton steps.
   flow.returnAtDegenerateStall = true;
   flow.solverCache = makeFlowSolverCache(flow.maxReuseIterations, flow.nestedDissectionMin);
+  // A reflex link vertex need not wait for a converged solve: once Newton converges quadratically, the angle sums move
+  // by about the residual per step, and a disk angle sum above π + 10·(residual) does not come back below π
+  // (UniformizationOptions::earlyReflexFactor). The solve stops there (stopAfterStep), and the round repairs as after a
+  // solve: degenerate faces first, else it releases those vertices (measured on the 10⁶-vertex box: the two vertices
+  // that the first repair adds are reflex by 0.097 rad after one Newton step at residual 10⁻³, and by 0.097 rad at the
+  // solution; converging first cost two Newton steps). Each vertex is judged early at most once, so one misjudged and
+  // put back on the link by a later repair is only released again at a solution: the rounds cannot cycle through early
+  // judgements.
+  std::vector<char> judgedEarly(nV, 0);
+  auto clearlyReflex = [&](int a, const std::vector<double>& sums, double maxResidual) {
+    return !judgedEarly[a] && sums[a] > M_PI + options.earlyReflexFactor * maxResidual;
+  };
+  if (options.earlyReflexFactor > 0)
+    flow.stopAfterStep = [&](const std::vector<double>& sums, double maxResidual) {
+      return std::any_of(link.begin(), link.end(), [&](int a) { return clearlyReflex(a, sums, maxResidual); });
+    };
   for (int round = 0;; ++round) {
     const RicciFlowReport solved = solveConformalFlow(metric, target, flow, &log);
     accumulate(report, solved);
-    // Early returns only until the first solve converges: afterwards reflex repairs take vertices out of the link, and
-    // stopping the next solve at a degenerate face would put them straight back (measured: a 2-cycle of rounds).
+    // Early returns at a stall only until the first solve gets past its degenerate faces: afterwards reflex repairs
+    // take vertices out of the link, and stopping the next solve at a degenerate face would put them straight back
+    // (measured: a 2-cycle of rounds).
     if (!solved.stoppedAtDegenerate) flow.returnAtDegenerateStall = false;
     // All repairs of one kind are batched per round (each flip only touches its own quad; the faces it creates
     // around ∞ are marked frozen at once so that later candidates see the current star). A face's validity depends
@@ -530,17 +562,16 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
       continue;
     }
     if (!changed) {
-      // Reflex link vertices, no two consecutive on the link (their spokes share a face), keeping the link ≥ 3.
+      // Reflex link vertices: at a solution, by more than the round-off of the angle sums (1e-9 rad); after an early
+      // stop, the clearly reflex ones.
       const std::vector<double> sums = flowAngleSums(metric);
-      const std::size_t degree = link.size();
-      std::vector<int> chosen;
-      for (std::size_t s = 0; s < degree; ++s) {
-        const bool prevChosen = !chosen.empty() && chosen.back() == link[(s + degree - 1) % degree];
-        const bool wrapsToFirst = s + 1 == degree && !chosen.empty() && chosen.front() == link[0];
-        if (sums[link[s]] > M_PI + 1e-9 && !prevChosen && !wrapsToFirst && degree - chosen.size() > 3)
-          chosen.push_back(link[s]);
-      }
-      for (int a : chosen) {
+      std::vector<int> reflex;
+      for (int a : link)
+        if (solved.stoppedByCaller ? clearlyReflex(a, sums, solved.maxResidual) : sums[a] > M_PI + 1e-9)
+          reflex.push_back(a);
+      if (solved.stoppedByCaller)
+        for (int a : reflex) judgedEarly[a] = 1;
+      for (int a : releasableLinkVertices(link, reflex)) {
         int h = m.vertexHalfedge(inf);
         while (m.tip(h) != a) h = m.nextOutgoing(h);
         if (metric.flipPtolemy(m.edge(h), &log)) {
@@ -548,12 +579,16 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
           released.push_back(a);
         }
       }
+      if (!changed && solved.stoppedByCaller) continue;  // none could go now: solve on, they are judged at the solution
     }
     if (!changed) break;
     if (options.progress)
       options.progress("sphere: star repair round " + std::to_string(round + 1) + ", link of " +
                        std::to_string(link.size()) + " vertices, last solve " + std::to_string(solved.newtonSteps) +
-                       " Newton steps" + (solved.stoppedAtDegenerate ? " (stopped at a degenerate face)" : ""));
+                       " Newton steps" +
+                       (solved.stoppedAtDegenerate ? " (stopped at a degenerate face)"
+                        : solved.stoppedByCaller   ? " (stopped at a clearly reflex vertex)"
+                                                   : ""));
     if (round > 10 * nV) return {false, "the star of the puncture did not stabilize"};
     if (!updateStar()) return {false, "a star flip made the link of the puncture non-simple"};
     // A vertex released from the link keeps its Dirichlet value, which is far from its own equation's solution: the

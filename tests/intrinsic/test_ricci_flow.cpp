@@ -71,6 +71,43 @@ TEST_CASE("a flow stopped early reports the residual it reached") {
                     Catch::Contains("1 Newton steps") && Catch::Contains("max |"));
 }
 
+TEST_CASE("stopAfterStep sees the angle sums of each accepted step and can end the flow there") {
+  const IntrinsicTriangulation input = perturbedTorus();
+  // Reference: the unstopped flow's residual after each step.
+  std::vector<double> before;
+  {
+    DiscreteConformalMetric metric(input, Background::Euclidean);
+    RicciFlowOptions flow;
+    flow.onStep = [&](const NewtonStepInfo& s) { before.push_back(s.maxResidual); };
+    solveConformalFlow(metric, flatTarget(input.mesh), flow);
+  }
+  REQUIRE(before.size() >= 4);
+  DiscreteConformalMetric metric(input, Background::Euclidean);
+  RicciFlowOptions flow;
+  int calls = 0;
+  double lastSeen = 0, sumsError = 0;
+  flow.stopAfterStep = [&](const std::vector<double>& sums, double maxResidual) {
+    ++calls;
+    lastSeen = maxResidual;
+    // The sums are those of the metric as it stands, and maxResidual is their largest deviation from 2π.
+    const std::vector<double> now = flowAngleSums(metric);
+    sumsError = std::max(sumsError, maxAbsDifference(sums, now));
+    double worst = 0;
+    for (double s : sums) worst = std::max(worst, std::abs(s - 2 * M_PI));
+    CHECK(worst == maxResidual);
+    return calls == 2;
+  };
+  const RicciFlowReport report = solveConformalFlow(metric, flatTarget(input.mesh), flow);
+  CHECK(report.stoppedByCaller);
+  CHECK(report.newtonSteps == 2);
+  CHECK(calls == 2);
+  CHECK(sumsError == 0);
+  // Stopped where the unstopped flow stood after two steps: the residual entering step 3.
+  CHECK(report.maxResidual == lastSeen);
+  CHECK(report.maxResidual == before[2]);
+  CHECK(report.maxResidual > report.effectiveTolerance);
+}
+
 TEST_CASE("obtuse and near-degenerate inputs converge through Ptolemy flips, quadratically") {
   const IntrinsicTriangulation input = perturbedTorus();
   double maxAngle = 0;

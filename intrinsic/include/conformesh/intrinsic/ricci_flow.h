@@ -107,6 +107,11 @@ struct RicciFlowOptions {
   bool returnAtDegenerateStall = false;
   // Called after every Newton step (for progress lines); may be empty.
   std::function<void(const NewtonStepInfo&)> onStep;
+  // Called after every accepted Newton step that has not yet reached the tolerance, with each vertex's angle sum Θ over
+  // the non-frozen faces and max_i |Θ̂_i − Θ_i| at that point; returning true ends the flow there
+  // (RicciFlowReport::stoppedByCaller, not converged). The genus-0 caller stops as soon as a link vertex of the
+  // puncture is clearly reflex, instead of converging a problem whose star is about to change. May be empty.
+  std::function<bool(const std::vector<double>& angleSums, double maxResidual)> stopAfterStep;
 };
 
 struct RicciFlowReport {
@@ -120,6 +125,7 @@ struct RicciFlowReport {
   int factorizations = 0;            // sparse Cholesky factorizations (symmetric problems)
   int cgIterations = 0;              // preconditioned conjugate-gradient iterations that reused a factor
   bool stoppedAtDegenerate = false;  // returned early by returnAtDegenerateStall (not converged)
+  bool stoppedByCaller = false;      // returned early because stopAfterStep said so (not converged)
   bool nestedDissection = false;     // the last analysis used METIS nested dissection (nestedDissectionMin)
 };
 

@@ -49,6 +49,11 @@ struct UniformizationOptions {
   // Genus 0: how many puncture vertices to try before giving up (a puncture fails when the flattened link polygon is
   // not convex, so the stereographic image would not be embedded).
   int maxPunctureAttempts = 8;
+  // Genus 0: a vertex of the puncture's link whose disk angle sum exceeds π by more than this many times the flow's
+  // residual is released from the link without waiting for the solve to converge (0: reflex vertices are judged at
+  // solutions only). 10: once Newton converges quadratically the sums move by about the residual per step, so such a
+  // vertex is reflex at the solution too; each vertex is judged early at most once (docs/ricci_flow.md, "Map back").
+  double earlyReflexFactor = 10;
   // Möbius centring: stop when the area-weighted centroid of the vertices is within this distance of the origin.
   double centringTolerance = 1e-12;
   // Progress messages (one per Newton step and per stage); may be empty.
