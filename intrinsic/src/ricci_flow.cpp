@@ -64,7 +64,7 @@ FaceGeometry faceGeometry(Background bg, double L0, double L1, double L2) {
   const double fs = f(p.s), fd[3] = {f(p.sa), f(p.sb), f(p.sc)};
   for (int k = 0; k < 3; ++k) {
     const double num = fd[(k + 1) % 3] * fd[(k + 2) % 3], den = fs * fd[k];
-    g.theta[k] = 2.0 * std::atan2(std::sqrt(num), std::sqrt(den));
+    g.theta[k] = 2.0 * std::atan(std::sqrt(num / den));  // as angleOpposite (den > 0 in a valid face)
     g.cot[k] = (den - num) / (2.0 * std::sqrt(num * den));
   }
   return g;
@@ -95,8 +95,8 @@ FaceGeometry faceGeometry(const DiscreteConformalMetric& metric, const std::vect
 }
 
 // Angle sums over the non-frozen faces, and each face's geometry (for the Jacobian at the same point). The faces are
-// evaluated in parallel (the three atan2 per face are most of the cost), the sums are then added in face order on one
-// thread, so that they are bit for bit those of a serial run whatever the number of threads.
+// evaluated in parallel (the three arctangents per face are most of the cost), the sums are then added in face order on
+// one thread, so that they are bit for bit those of a serial run whatever the number of threads.
 void evaluateFaces(const DiscreteConformalMetric& metric, std::vector<double>& length, std::vector<double>& sums,
                    std::vector<FaceGeometry>& faces) {
   const HalfedgeMesh& m = metric.mesh();

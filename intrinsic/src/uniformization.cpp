@@ -598,6 +598,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     for (int a : released) solveVertexLocally(a);
     released.clear();
   }
+  flow.solverCache.reset();  // the factor (≈ 1 GB at 10⁶ vertices) is not needed for the layout
   for (int f = 0; f < m.nFaces(); ++f)
     if (!frozen[f]) {
       double L[3];
@@ -858,8 +859,20 @@ std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, doubl
   // the edge lengths: 1.2·10⁻⁹ from face 0, 9·10⁻¹⁰ from that face (measured; the 10⁵-vertex box: 10⁻¹¹ instead of
   // 1–3·10⁻¹⁰).
   std::vector<Eigen::Vector2d> dir(m.nHalfedges(), Eigen::Vector2d::Zero());
-  auto rotate = [](const Eigen::Vector2d& d, double angle) {
-    const double c = std::cos(angle), s = std::sin(angle);
+  // (cos, sin) of every corner angle, computed up front on two cores: the arctangents, cosines and sines are most of
+  // the work, and only the breadth-first unfolding below is sequential.
+  std::vector<Eigen::Vector2d> turn(m.nHalfedges());
+  onTwoCores(m.nFaces(), kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+    for (auto f = static_cast<int>(begin); f < end; ++f)
+      if (!skip(f))
+        for (int h = 3 * f; h < 3 * f + 3; ++h) {
+          const double angle = cornerAngle(tri, h);
+          turn[h] = Eigen::Vector2d(std::cos(angle), std::sin(angle));
+        }
+  });
+  // d rotated counter-clockwise (sign +1) or clockwise (−1) by the corner angle at the tail of h.
+  auto rotate = [&](const Eigen::Vector2d& d, int h, double sign) {
+    const double c = turn[h].x(), s = sign * turn[h].y();
     return Eigen::Vector2d(c * d.x() - s * d.y(), s * d.x() + c * d.y());
   };
   // Face of halfedge h (a → b, direction known), third vertex c to the left of a → b: place c from a and set the
@@ -867,10 +880,10 @@ std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, doubl
   // b → a by the angle at b (clockwise).
   auto layFace = [&](int h) {
     const int pv = HalfedgeMesh::prev(h), nx = HalfedgeMesh::next(h);
-    const Eigen::Vector2d ac = rotate(dir[h], cornerAngle(tri, h));
+    const Eigen::Vector2d ac = rotate(dir[h], h, 1);
     place(m.tail(pv), p[m.tail(h)] + tri.length(pv) * ac);
     dir[pv] = -ac;
-    dir[nx] = rotate(-dir[h], -cornerAngle(tri, nx));
+    dir[nx] = rotate(-dir[h], nx, -1);
   };
   std::vector<int> queue;
   for (int seed = 0; seed < m.nFaces(); ++seed) {
