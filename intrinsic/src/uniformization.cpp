@@ -11,7 +11,9 @@
 #include <queue>
 #include <sstream>
 
+#include <Eigen/Cholesky>
 #include <Eigen/CholmodSupport>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include "conformesh/intrinsic/discrete_conformal.h"
@@ -689,8 +691,12 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   // Möbius centring: move the centroid c of the input's area measure (vertex weights: a third of the input area of
   // each incident face, fixed — the sphere's own area measure would have centroid ≈ 0 for every configuration) to
   // the origin with the ball automorphism φ_c(x) = (1−|c|²)(x−c)/|x−c|² − c, whose conformal factor on the sphere is
-  // |φ_c'(x)| = (1−|c|²)/|x−c|²; chords scale by sqrt(|φ'(x)||φ'(y)|), so w gains log |φ'|. For a near-uniform
-  // measure φ_c moves the centroid by −(4/3)c to first order, so the step uses (3/4)c (capped at 0.5).
+  // |φ_c'(x)| = (1−|c|²)/|x−c|²; chords scale by sqrt(|φ'(x)||φ'(y)|), so w gains log |φ'|. Newton's method on the
+  // centroid C(a) of the measure moved by φ_a: dφ_a(x)/da = 2(x xᵀ − I) at a = 0 for |x| = 1, so dC/da = −2(I − M)
+  // with M = Σ ω x xᵀ / Σ ω (trace 1), and the step is a = ½ (I − M)⁻¹ C — (3/4) C for a uniform measure (M = I/3),
+  // the fixed step used before, which converged linearly (28 iterations to 10⁻¹² on the 10⁵-vertex box). Steps are
+  // capped at |a| ≤ 0.5; where I − M is nearly singular (the measure close to a pair of antipodal points) the step
+  // falls back to (3/4) C.
   std::vector<double> weight(nV, 0.0);
   {
     const IntrinsicTriangulation flat = referencePenner(input);
@@ -699,14 +705,21 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
   }
   for (int it = 0; it < 100; ++it) {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
     double total = 0;
     for (int v = 0; v < nV; ++v) {
       c += weight[v] * x[v];
+      moment += weight[v] * x[v] * x[v].transpose();
       total += weight[v];
     }
     c /= total;
+    moment /= total;
     if (c.norm() <= options.centringTolerance) break;
-    c *= 0.75;
+    const Eigen::Matrix3d jacobian = 2 * (Eigen::Matrix3d::Identity() - moment);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> spectrum(jacobian, Eigen::EigenvaluesOnly);
+    // Its eigenvalues are 4/3 for a uniform measure and tend to 0 as the measure concentrates on two antipodal points;
+    // below 0.2 the linearization is not trusted.
+    c = spectrum.eigenvalues().minCoeff() > 0.2 ? Eigen::Vector3d(jacobian.ldlt().solve(c)) : Eigen::Vector3d(0.75 * c);
     if (c.norm() > 0.5) c *= 0.5 / c.norm();
     const double k = 1 - c.squaredNorm();
     onTwoCores(nV, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
