@@ -270,6 +270,17 @@ class SymmetricAssembly {
   std::vector<double> value_;  // 6 per face (kPair)
 };
 
+// The arrays of one flow solve — the last evaluation (edge lengths, angle sums, face geometry) and the Newton system.
+// Kept in the solver cache when solves share one (RicciFlowOptions::solverCache): the genus-0 star repair solves again
+// and again on the same mesh, and fresh arrays of this size cost page faults on first touch (at 10⁶ vertices ≈ 0.3 s
+// per solve, measured).
+struct FlowWorkspace {
+  std::vector<double> lengths, sums;
+  std::vector<FaceGeometry> faces;
+  SymmetricAssembly assembly;
+  SparseMatrix H;
+};
+
 // Eigen's CHOLMOD wrapper with access to the factor it holds (for SinglePrecisionFactor), and a symbolic analysis in a
 // given elimination order (nestedDissectionOrder at large sizes, fill_reducing_order.h).
 class SupernodalCholesky : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
@@ -322,6 +333,7 @@ class FlowSolverCache {
   }
   int factorizations() const { return factorizations_; }
   int cgIterations() const { return cgIterations_; }
+  FlowWorkspace& workspace() { return workspace_; }
   bool nestedDissection() const { return nestedDissection_; }
 
   // Returns false when the factorization fails (H not positive definite).
@@ -384,6 +396,7 @@ class FlowSolverCache {
 
   SupernodalCholesky solver_;
   SinglePrecisionFactor single_;
+  FlowWorkspace workspace_;
   int maxIterations_, nestedDissectionMin_;
   int dimension_ = -1;
   bool patternValid_ = false, haveFactor_ = false, analysed_ = false, nestedDissection_ = false;
@@ -622,9 +635,13 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
   bool gaugeOn = false;
   int row0 = -1, row1 = -1;  // the active gauge rows (−1 while off)
   std::string circleFailure;
-  // The last evaluation: edge lengths, angle sums and face geometry at the current u (the Jacobian's point).
-  std::vector<double> lengths, sums;
-  std::vector<FaceGeometry> faces;
+  // The last evaluation: edge lengths, angle sums and face geometry at the current u (the Jacobian's point); the
+  // solver and the arrays of the solve, the cache's when it is shared.
+  FlowSolverCache local(options.maxReuseIterations, options.nestedDissectionMin);
+  FlowSolverCache& solver = shared ? *options.solverCache : local;
+  FlowWorkspace& work = solver.workspace();
+  std::vector<double>&lengths = work.lengths, &sums = work.sums;
+  std::vector<FaceGeometry>& faces = work.faces;
   auto residual = [&](double& maxAbs, double& norm2) {
     if (circles) {
       // A trial step can make a short loop uninscribable (one side longer than the rest): an infinite merit rejects
@@ -672,14 +689,12 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
         (circleFailure.empty() ? std::string("the initial angle sums are not finite") : circleFailure));
   report.maxResidual = maxAbs;
 
-  FlowSolverCache local(options.maxReuseIterations, options.nestedDissectionMin);
-  FlowSolverCache& solver = shared ? *options.solverCache : local;
   solver.setDimension(n);
   const int factorizationsBefore = solver.factorizations(), cgBefore = solver.cgIterations();
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
   std::vector<Eigen::Triplet<double>> triplets;  // circle domains
   // Symmetric problems: the unknown of each vertex as its faces see it (identity rows have no face entries).
-  SymmetricAssembly assembly;
+  SymmetricAssembly& assembly = work.assembly;
   std::vector<int> faceIndex(nV, -1);
   if (!circles) {
     for (int v = 0; v < nV; ++v)
@@ -687,7 +702,8 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
     assembly.setIdentityRows(identityRow);
   }
   bool patternValid = false;
-  SparseMatrix H(n, n);
+  SparseMatrix& H = work.H;
+  H.resize(n, n);
   while (maxAbs > report.effectiveTolerance) {
     if (report.newtonSteps >= options.maxNewtonSteps) {
       std::ostringstream msg;
