@@ -912,6 +912,7 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
   report.cgIterations = solver.cgIterations() - cgBefore;
   report.nestedDissection = solver.nestedDissection();
   if (report.stoppedAtDegenerate || report.stoppedByCaller) {
+    report.angleSums = sums;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
   }
@@ -924,6 +925,7 @@ RicciFlowReport solveConformalFlow(DiscreteConformalMetric& metric, const Confor
                              std::to_string(m.faceVertex(f, 0)) + ", " + std::to_string(m.faceVertex(f, 1)) + ", " +
                              std::to_string(m.faceVertex(f, 2)) +
                              "): the target needs a flip of an edge that may not flip (a boundary edge)");
+  report.angleSums = sums;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

@@ -566,7 +566,7 @@ SphereAttempt trySphere(const IntrinsicTriangulation& input, const Uniformizatio
     if (!changed) {
       // Reflex link vertices: at a solution, by more than the round-off of the angle sums (1e-9 rad); after an early
       // stop, the clearly reflex ones.
-      const std::vector<double> sums = flowAngleSums(metric);
+      const std::vector<double>& sums = solved.angleSums;
       std::vector<int> reflex;
       for (int a : link)
         if (solved.stoppedByCaller ? clearlyReflex(a, sums, solved.maxResidual) : sums[a] > M_PI + 1e-9)

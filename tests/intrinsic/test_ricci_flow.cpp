@@ -106,6 +106,8 @@ TEST_CASE("stopAfterStep sees the angle sums of each accepted step and can end t
   CHECK(report.maxResidual == lastSeen);
   CHECK(report.maxResidual == before[2]);
   CHECK(report.maxResidual > report.effectiveTolerance);
+  // The report carries the angle sums at exit.
+  CHECK(maxAbsDifference(report.angleSums, flowAngleSums(metric)) == 0);
 }
 
 TEST_CASE("obtuse and near-degenerate inputs converge through Ptolemy flips, quadratically") {

@@ -126,6 +126,7 @@ struct RicciFlowReport {
   int cgIterations = 0;              // preconditioned conjugate-gradient iterations that reused a factor
   bool stoppedAtDegenerate = false;  // returned early by returnAtDegenerateStall (not converged)
   bool stoppedByCaller = false;      // returned early because stopAfterStep said so (not converged)
+  std::vector<double> angleSums;     // Θ per vertex over the non-frozen faces at exit (as flowAngleSums)
   bool nestedDissection = false;     // the last analysis used METIS nested dissection (nestedDissectionMin)
 };
 
