@@ -14,12 +14,12 @@ build=${BUILD_DIR:-$here/build}
 jobs=${JOBS:-$(nproc)}
 
 # Debian 12 packages: compilers and CMake; the design card's libraries; CLI11 and nlohmann-json for the CLI;
-# SuiteSparse (CHOLMOD) and METIS for the Ricci-flow Newton solver; OpenBLAS, which Debian's alternatives then select
+# SuiteSparse (CHOLMOD) and SCOTCH (nested dissection) for the Ricci-flow Newton solver; OpenBLAS, which Debian's alternatives then select
 # as the BLAS that CHOLMOD's supernodal factorization calls (faster than the reference BLAS or ATLAS's generic build:
 # docs/benchmarks.md); HDF5 for sampled metric fields; matplotlib for plots; libcgal-demo for CGAL's data set of real
 # meshes that the tests read (made by others, so topology checks are not self-fulfilling).
 packages=(build-essential cmake libeigen3-dev libceres-dev libboost-graph-dev libgeographiclib-dev catch2
-          libcli11-dev nlohmann-json3-dev libsuitesparse-dev libmetis-dev libopenblas0-pthread libhdf5-dev
+          libcli11-dev nlohmann-json3-dev libsuitesparse-dev libscotch-dev libopenblas0-pthread libhdf5-dev
           python3-matplotlib libcgal-demo)
 missing=()
 for p in "${packages[@]}"; do

@@ -1,4 +1,4 @@
-// test_fill_reducing_order.cpp — METIS nested dissection as the flow calls it (src/fill_reducing_order.h): the result
+// test_fill_reducing_order.cpp — SCOTCH nested dissection as the flow calls it (src/fill_reducing_order.h): the result
 // is a permutation in the documented convention (perm[k] = the k-th unknown eliminated), and its Cholesky fill on
 // k×k grid Laplacians grows like n log n (George 1973), against n^1.5 for the natural (banded) order, both orders
 // measured by a log–log fit over four grids.
@@ -68,8 +68,8 @@ TEST_CASE("nested dissection is a permutation whose fill grows like n log n, the
     CHECK(factorEntries(lower, inverse) > 2 * nested.back());
   }
   // n log n between n = 2¹⁰ and 2¹⁶ has log–log slope 1 + log(16/10)/log(2¹⁶/2¹⁰) = 1.11; the band of width k fills
-  // completely, n·k = n^1.5. The test separates the two laws at the midpoint 1.3 (METIS's separators are not George's
-  // optimal ones on small grids: 1.17 is measured).
+  // completely, n·k = n^1.5. The test separates the two laws at the midpoint 1.3 (SCOTCH's separators are not George's
+  // optimal ones on small grids: 1.18 is measured, 1.17 with METIS before).
   const double nestedSlope = fitLogLogSlope(n, nested), naturalSlope = fitLogLogSlope(n, natural);
   INFO("slopes: nested " << nestedSlope << ", natural " << naturalSlope);
   CHECK(nestedSlope > 1.0);

@@ -202,26 +202,26 @@ TEST_CASE("a reused Cholesky factor preconditioning conjugate gradients keeps th
   CHECK(maxAbsDifference(reused.u(), direct.u()) < 1e-7);
 }
 
-TEST_CASE("METIS nested dissection (RicciFlowOptions::nestedDissectionMin) keeps the solution of CHOLMOD's ordering") {
+TEST_CASE("SCOTCH nested dissection (RicciFlowOptions::nestedDissectionMin) keeps the solution of CHOLMOD's ordering") {
   // The perturbed torus, once ordered by CHOLMOD's default choice (AMD at this size) and once by the
-  // direct METIS call that large systems use; both also precondition conjugate gradients with the factor in single
+  // SCOTCH call that large systems use; both also precondition conjugate gradients with the factor in single
   // precision, whose supernode tree is then the one of the given (postordered) order.
   const IntrinsicTriangulation input = perturbedTorus();
-  DiscreteConformalMetric byCholmod(input, Background::Euclidean), byMetis(input, Background::Euclidean);
+  DiscreteConformalMetric byCholmod(input, Background::Euclidean), byScotch(input, Background::Euclidean);
   const RicciFlowReport a = solveConformalFlow(byCholmod, flatTarget(input.mesh));
-  RicciFlowOptions metis;
-  metis.nestedDissectionMin = 0;
-  const RicciFlowReport b = solveConformalFlow(byMetis, flatTarget(input.mesh), metis);
+  RicciFlowOptions scotch;
+  scotch.nestedDissectionMin = 0;
+  const RicciFlowReport b = solveConformalFlow(byScotch, flatTarget(input.mesh), scotch);
   INFO("Newton steps " << a.newtonSteps << " / " << b.newtonSteps << ", CG iterations " << a.cgIterations << " / "
                        << b.cgIterations);
   CHECK_FALSE(a.nestedDissection);
   CHECK(b.nestedDissection);
   CHECK(b.cgIterations > 0);
   CHECK(b.maxResidual < 1e-10);
-  const std::vector<double> sums = angleSums(byMetis.triangulation());
+  const std::vector<double> sums = angleSums(byScotch.triangulation());
   for (int v = 0; v < input.mesh.nVertices(); ++v) CHECK(std::abs(sums[v] - 2 * M_PI) < 1e-10);
   // Within 1e-10 rad of the unique solution both: the conformal factors agree to 1e-7 (the bound of the test above).
-  CHECK(maxAbsDifference(byCholmod.u(), byMetis.u()) < 1e-7);
+  CHECK(maxAbsDifference(byCholmod.u(), byScotch.u()) < 1e-7);
 }
 
 TEST_CASE("a solver cache shared by Dirichlet problems with different fixed sets gives the uncached solutions") {

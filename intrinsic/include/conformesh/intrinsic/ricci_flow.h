@@ -81,12 +81,12 @@ struct RicciFlowOptions {
   // Newton systems after the first are solved by conjugate gradients preconditioned with the last Cholesky factor;
   // when they do not converge in this many iterations the Hessian is factored anew (0: factor at every step).
   int maxReuseIterations = 20;
-  // From this many unknowns on, the Newton systems are ordered for the Cholesky factorization by METIS nested
-  // dissection with one refinement pass per level (called directly); below, by CHOLMOD's default choice (AMD, plus
-  // METIS with ten passes when AMD's fill is large). Measured on the genus-0 box (docs/benchmarks.md): at 10⁵ unknowns
-  // CHOLMOD keeps AMD, and METIS would cost 0.5 s to save ≈ 0.1 s of factorization; at 10⁶ CHOLMOD's analysis takes
-  // ≈ 9 s (AMD, then METIS), the direct call 5.4–6.4 s of METIS for 1.5 % more factorization flops. The order only
-  // changes round-off, not the solution (the stopping test is on the residual).
+  // From this many unknowns on, the Newton systems are ordered for the Cholesky factorization by SCOTCH's nested
+  // dissection (speed strategy, src/fill_reducing_order.h); below, by CHOLMOD's default choice (AMD, plus METIS with
+  // ten passes when AMD's fill is large). Measured on the genus-0 box (docs/benchmarks.md): at 10⁵ unknowns CHOLMOD
+  // keeps AMD, and METIS would cost 0.5 s to save ≈ 0.1 s of factorization (the threshold was set with METIS); at 10⁶
+  // CHOLMOD's analysis takes ≈ 9 s, METIS alone 5.4–7.8 s, SCOTCH 2.1–2.5 s for 15 % more factorization flops than
+  // METIS. The order only changes round-off, not the solution (the stopping test is on the residual).
   int nestedDissectionMin = 300000;
   // Optional: share the factor with other solves (makeFlowSolverCache). Dirichlet vertices then stay unknowns with
   // identity rows, so that changes of the Dirichlet set keep the dimension. Ignored for circle loops.
@@ -127,7 +127,7 @@ struct RicciFlowReport {
   bool stoppedAtDegenerate = false;  // returned early by returnAtDegenerateStall (not converged)
   bool stoppedByCaller = false;      // returned early because stopAfterStep said so (not converged)
   std::vector<double> angleSums;     // Θ per vertex over the non-frozen faces at exit (as flowAngleSums)
-  bool nestedDissection = false;     // the last analysis used METIS nested dissection (nestedDissectionMin)
+  bool nestedDissection = false;     // the last analysis used SCOTCH nested dissection (nestedDissectionMin)
 };
 
 // Checks the target (sizes, finite, Θ̂ > 0 at free vertices, Gauss–Bonnet for closed Euclidean problems without frozen
