@@ -38,15 +38,21 @@ namespace {
 
 // === helpers
 
-// A fresh directory per test program run; files are written into it by name.
+// A fresh directory per test program run; files are written into it by name. Removed when the program exits.
 const fs::path& scratchDir() {
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("conformesh_test_mesh_io_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
+  struct Scratch {
+    fs::path path = fs::temp_directory_path() / ("conformesh_test_mesh_io_" + std::to_string(::getpid()));
+    Scratch() {
+      fs::remove_all(path);
+      fs::create_directories(path);
+    }
+    ~Scratch() {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  };
+  static const Scratch scratch;
+  return scratch.path;
 }
 
 std::string writeFile(const std::string& name, const std::string& bytes) {

@@ -25,10 +25,19 @@ inline std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
+// This test process's scratch directory, removed with its contents when the process exits (each process has its own).
 inline std::filesystem::path scratchDir() {
-  const auto d = std::filesystem::temp_directory_path() / ("conformesh_cli_test_" + std::to_string(getpid()));
-  std::filesystem::create_directories(d);
-  return d;
+  struct Scratch {
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("conformesh_cli_test_" + std::to_string(getpid()));
+    Scratch() { std::filesystem::create_directories(path); }
+    ~Scratch() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Scratch scratch;
+  return scratch.path;
 }
 
 // Runs `conformesh ARGS` with a 60 s timeout, so that a hang fails the test instead of stalling the suite.
