@@ -14,7 +14,8 @@ namespace conformesh::intrinsic {
 
 namespace {
 
-// SCOTCH's objects, released in reverse order whatever happens.
+// SCOTCH's objects, released whatever happens, each before what it refers to (the bound graph before its context and
+// the graph it views).
 struct ScotchOrdering {
   SCOTCH_Graph graph, bound;
   SCOTCH_Context context;
