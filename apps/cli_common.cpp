@@ -8,9 +8,9 @@
 #include <memory>
 
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/mesh_io.h"
-#include "conformesh/intrinsic/metric_families.h"
-#include "conformesh/intrinsic/sampled_metric.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/sampled_metric.h"
 
 namespace conformesh::apps {
 

@@ -11,10 +11,10 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "conformesh/intrinsic/gaussian_curvature_measure.h"
-#include "conformesh/intrinsic/mesh_data.h"
-#include "conformesh/intrinsic/smooth_metric.h"
-#include "conformesh/intrinsic/vtk_writer.h"
+#include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+#include "conformesh/intrinsic/mesh/mesh_data.h"
+#include "conformesh/intrinsic/metric/smooth_metric.h"
+#include "conformesh/intrinsic/io/vtk_writer.h"
 
 namespace conformesh::apps {
 

@@ -12,8 +12,8 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/metric_families.h"
-#include "conformesh/refine/convergence_study.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/refine/pipeline/convergence_study.h"
 #include "report_json.h"
 
 namespace conformesh::apps {

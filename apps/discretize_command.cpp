@@ -17,13 +17,13 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "conformesh/intrinsic/curvature.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/mesh_io.h"
-#include "conformesh/intrinsic/metric_discretization.h"
-#include "conformesh/intrinsic/metric_families.h"
-#include "conformesh/intrinsic/metric_quadrature.h"
-#include "conformesh/intrinsic/sampled_metric.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/metric/metric_discretization.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_quadrature.h"
+#include "conformesh/intrinsic/metric/sampled_metric.h"
 
 namespace conformesh::apps {
 

@@ -6,9 +6,9 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "conformesh/embedding/isometric_embedding.h"
+#include "conformesh/embedding/fit/isometric_embedding.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/mesh_io.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
 
 namespace conformesh::apps {
 

@@ -18,9 +18,9 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/halfedge_mesh.h"
-#include "conformesh/intrinsic/mesh_generators.h"
-#include "conformesh/intrinsic/mesh_io.h"
+#include "conformesh/intrinsic/mesh/halfedge_mesh.h"
+#include "conformesh/intrinsic/mesh/mesh_generators.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
 
 namespace conformesh::apps {
 

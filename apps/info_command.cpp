@@ -7,9 +7,9 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "conformesh/intrinsic/intrinsic_flips.h"
-#include "conformesh/intrinsic/mesh_io.h"
-#include "conformesh/intrinsic/mesh_summary.h"
+#include "conformesh/intrinsic/mesh/intrinsic_flips.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/mesh/mesh_summary.h"
 
 namespace conformesh::apps {
 

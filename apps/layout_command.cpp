@@ -10,10 +10,10 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "conformesh/embedding/layout_picture.h"
-#include "conformesh/embedding/layout_ply.h"
+#include "conformesh/embedding/layout/layout_picture.h"
+#include "conformesh/embedding/layout/layout_ply.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/uniformization.h"
+#include "conformesh/intrinsic/flow/uniformization.h"
 
 namespace conformesh::apps {
 

@@ -11,9 +11,9 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/mesh_io.h"
-#include "conformesh/refine/delaunay_refinement.h"
-#include "conformesh/refine/refinement_quality.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/refine/delaunay/delaunay_refinement.h"
+#include "conformesh/refine/delaunay/refinement_quality.h"
 #include "report_json.h"
 
 namespace conformesh::apps {

@@ -8,12 +8,12 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/gaussian_curvature_measure.h"
-#include "conformesh/intrinsic/mesh_io.h"
-#include "conformesh/intrinsic/metric_families.h"
-#include "conformesh/intrinsic/vtk_writer.h"
-#include "conformesh/refine/remesh.h"
-#include "remesh_mesh.h"
+#include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/io/vtk_writer.h"
+#include "conformesh/refine/pipeline/metric_remesh.h"
+#include "remesh_mesh_input.h"
 #include "report_json.h"
 
 namespace conformesh::apps {

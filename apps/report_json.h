@@ -3,10 +3,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "conformesh/intrinsic/gaussian_curvature_measure.h"
-#include "conformesh/intrinsic/uniformization.h"
-#include "conformesh/refine/delaunay_refinement.h"
-#include "conformesh/refine/refinement_quality.h"
+#include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+#include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/refine/delaunay/delaunay_refinement.h"
+#include "conformesh/refine/delaunay/refinement_quality.h"
 
 namespace conformesh::apps {
 

@@ -7,11 +7,11 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "conformesh/intrinsic/circle_packing.h"
-#include "conformesh/intrinsic/curvature.h"
+#include "conformesh/intrinsic/flow/circle_packing.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/mesh_io.h"
-#include "conformesh/intrinsic/uniformization.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/flow/uniformization.h"
 
 namespace conformesh::apps {
 

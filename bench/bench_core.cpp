@@ -11,8 +11,8 @@
 #include <random>
 #include <string>
 
-#include "conformesh/intrinsic/intrinsic_flips.h"
-#include "conformesh/intrinsic/mesh_io.h"
+#include "conformesh/intrinsic/mesh/intrinsic_flips.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
 
 using namespace conformesh::intrinsic;
 

@@ -21,13 +21,13 @@
 
 #include <benchmark/benchmark.h>
 
-#include "conformesh/embedding/coarse_to_fine.h"
-#include "conformesh/embedding/isometric_embedding.h"
-#include "conformesh/embedding/mean_curvature_measure.h"
-#include "conformesh/embedding/procrustes.h"
-#include "conformesh/intrinsic/mesh_data.h"
-#include "conformesh/intrinsic/metric_discretization.h"
-#include "conformesh/intrinsic/metric_families.h"
+#include "conformesh/embedding/fit/coarse_to_fine.h"
+#include "conformesh/embedding/fit/isometric_embedding.h"
+#include "conformesh/embedding/extrinsic/mean_curvature_measure.h"
+#include "conformesh/embedding/fit/procrustes.h"
+#include "conformesh/intrinsic/mesh/mesh_data.h"
+#include "conformesh/intrinsic/metric/metric_discretization.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
 
 using namespace conformesh;
 

@@ -32,9 +32,9 @@
 #include <string>
 #include <vector>
 
-#include "conformesh/intrinsic/mesh_data.h"
-#include "conformesh/refine/delaunay_refinement.h"
-#include "conformesh/refine/refinement_quality.h"
+#include "conformesh/intrinsic/mesh/mesh_data.h"
+#include "conformesh/refine/delaunay/delaunay_refinement.h"
+#include "conformesh/refine/delaunay/refinement_quality.h"
 
 #ifdef CONFORMESH_HAVE_CGAL
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>

@@ -8,8 +8,8 @@
 
 #include <cmath>
 
-#include "conformesh/intrinsic/mesh_generators.h"
-#include "conformesh/intrinsic/uniformization.h"
+#include "conformesh/intrinsic/mesh/mesh_generators.h"
+#include "conformesh/intrinsic/flow/uniformization.h"
 
 using namespace conformesh::intrinsic;
 

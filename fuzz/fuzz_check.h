@@ -12,8 +12,8 @@
 #include <string>
 
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/mesh_io.h"
-#include "mesh_io_internal.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "io/mesh_io_internal.h"
 
 namespace conformesh::fuzz {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "conformesh/intrinsic/mesh_io.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
 #include "fuzz_check.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "conformesh/intrinsic/mesh_io.h"
-#include "mesh_io_internal.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "io/mesh_io_internal.h"
 
 using namespace conformesh::intrinsic;
 namespace fs = std::filesystem;

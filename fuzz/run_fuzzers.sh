@@ -22,7 +22,7 @@ INCLUDES=(-I"$ROOT/intrinsic/include" -I"$ROOT/intrinsic/src" -I"$ROOT/fuzz" -I/
 SAN=(-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer)
 COMMON=(-std=c++17 -O1 -g "${SAN[@]}" "${INCLUDES[@]}")
 # The readers and everything they call (backgroundFromString lives in triangle_geometry.cpp).
-SOURCES=(mesh_io obj_io off_io ply_io triangle_geometry)
+SOURCES=(io/mesh_io io/obj_io io/off_io io/ply_io mesh/triangle_geometry)
 
 if [ "${FUZZ_NO_REBUILD:-0}" = 1 ] && [ -x "$OUT/make_seeds" ]; then
   echo "== reusing the fuzzers built in $OUT (FUZZ_NO_REBUILD=1)"
@@ -31,8 +31,8 @@ echo "== compiling readers with coverage instrumentation in $OUT"
 mkdir -p "$OUT/obj-files"
 OBJECTS=()
 for s in "${SOURCES[@]}"; do
-  "$CXX" "${COMMON[@]}" -fsanitize=fuzzer-no-link -c "$ROOT/intrinsic/src/$s.cpp" -o "$OUT/obj-files/$s.o"
-  OBJECTS+=("$OUT/obj-files/$s.o")
+  "$CXX" "${COMMON[@]}" -fsanitize=fuzzer-no-link -c "$ROOT/intrinsic/src/$s.cpp" -o "$OUT/obj-files/${s##*/}.o"
+  OBJECTS+=("$OUT/obj-files/${s##*/}.o")
 done
 for t in $TARGETS; do
   "$CXX" "${COMMON[@]}" -fsanitize=fuzzer "$ROOT/fuzz/fuzz_$t.cpp" "${OBJECTS[@]}" -o "$OUT/fuzz_$t"

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "../support/cli_runner.h"
+#include "support/cli_runner.h"
 
 namespace fs = std::filesystem;
 

@@ -3,7 +3,7 @@
 // one-line errors naming the family, the parameter or the field file's line.
 #include <catch2/catch.hpp>
 
-#include "../support/cli_runner.h"
+#include "support/cli_runner.h"
 
 #include <sys/wait.h>
 
@@ -15,10 +15,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "conformesh/intrinsic/mesh_io.h"
-#include "conformesh/intrinsic/metric_families.h"
-#include "conformesh/intrinsic/sampled_field_hdf5.h"
-#include "conformesh/intrinsic/sampled_metric.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/sampled_field_hdf5.h"
+#include "conformesh/intrinsic/metric/sampled_metric.h"
 
 namespace fs = std::filesystem;
 using namespace conformesh::intrinsic;

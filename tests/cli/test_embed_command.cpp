@@ -3,7 +3,7 @@
 // residual, the best fit still written), --init, and one-line errors for bad input.
 #include <catch2/catch.hpp>
 
-#include "../support/cli_runner.h"
+#include "support/cli_runner.h"
 
 #include <filesystem>
 #include <fstream>
@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "conformesh/intrinsic/mesh_io.h"
-#include "conformesh/intrinsic/metric_discretization.h"
-#include "conformesh/intrinsic/metric_families.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/metric/metric_discretization.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
 
 namespace fs = std::filesystem;
 using namespace conformesh::intrinsic;

@@ -4,7 +4,7 @@
 // balanced centroid; the PNG when matplotlib is installed; one-line errors naming the extension or the file.
 #include <catch2/catch.hpp>
 
-#include "../support/cli_runner.h"
+#include "support/cli_runner.h"
 
 #include <cmath>
 #include <filesystem>

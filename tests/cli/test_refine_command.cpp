@@ -4,7 +4,7 @@
 // Gauss–Bonnet; Chew's run deletes vertices; a bad rule name is a one-line error.
 #include <catch2/catch.hpp>
 
-#include "../support/cli_runner.h"
+#include "support/cli_runner.h"
 
 #include <cmath>
 #include <filesystem>
@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "conformesh/intrinsic/mesh_io.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
 
 namespace fs = std::filesystem;
 using namespace conformesh::intrinsic;

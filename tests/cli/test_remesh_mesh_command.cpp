@@ -4,7 +4,7 @@
 // the file ≥ 20.7°), and one-line errors for a bad mesh file or options.
 #include <catch2/catch.hpp>
 
-#include "../support/cli_runner.h"
+#include "support/cli_runner.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "conformesh/intrinsic/curvature.h"
-#include "conformesh/intrinsic/mesh_io.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
 
 namespace fs = std::filesystem;
 using namespace conformesh::intrinsic;

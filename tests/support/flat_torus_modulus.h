@@ -9,8 +9,8 @@
 #include <tuple>
 #include <vector>
 
-#include "conformesh/intrinsic/intrinsic_triangulation.h"
-#include "conformesh/intrinsic/mesh_generators.h"
+#include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
+#include "conformesh/intrinsic/mesh/mesh_generators.h"
 
 namespace conformesh::testing {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "conformesh/intrinsic/mesh_data.h"
+#include "conformesh/intrinsic/mesh/mesh_data.h"
 
 namespace conformesh::testing {
 

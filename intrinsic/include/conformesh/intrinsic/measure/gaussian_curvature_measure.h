@@ -1,0 +1,127 @@
+// gaussian_curvature_measure.h — the paper's convergence check, intrinsic (eqs. 1, 3, 5 and Theorem 3.4): for each
+// vertex v of an output mesh T, a region B_v (a union of triangles around v), the discrete measure φ_T(B_v) = Σ angle
+// deficits (and, on a surface with boundary, boundary turnings) of the vertices in B_v, against the smooth measure
+// φ_M(η(B_v)) = ∫K dA (+ ∫k_g ds + Σ corner turnings along the boundary) over the part of the smooth surface that B_v
+// maps to, integrated with the metric's own K and Christoffel symbols — independently of the mesh's angles.
+//
+// T's vertices sit on the smooth surface as points of the chart's pole-free reference surface (smooth_metric.h:
+// referencePoint); each triangle of T maps to the reference triangle spanned by its three points (straight in the plane
+// or on the torus/cylinder chart, gnomonic — a geodesic triangle — on the reference sphere), which is the natural
+// projection η of the paper's §4.4 for the piecewise-linear parametrization it uses (§5.1.2).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
+#include "conformesh/intrinsic/metric/metric_quadrature.h"
+#include "conformesh/intrinsic/metric/smooth_metric.h"
+
+namespace conformesh::intrinsic {
+
+// Which region around each vertex v is compared.
+enum class MeasureRegion {
+  // B_v = {p : d(p, v) < r}, d the mesh's graph-geodesic distance from v (Dijkstra along edges), interpolated linearly
+  // inside triangles. φ_T(B_v) = Σ deficits of the vertices in B_v; φ_M = ∫K dA over the image of the same region,
+  // triangles cut by the level set d = r included in part. This is the paper's experiment (§6.2, balls B(q, r)) made
+  // intrinsic: atoms near the ball's rim fall in or out with no systematic bias.
+  GeodesicBall,
+  // B_v = the union of triangles whose three vertices are within d < r, and φ_T its interior vertices' deficits: the
+  // setting of Theorem 3.4 verbatim. The deficits of vertices on ∂B_v are left out, a one-sided O(ε·length(∂B)) term
+  // the theorem's bound allows, so relative errors are biased by ≈ ε / r.
+  TriangleUnion
+};
+
+// On a surface with boundary the Gaussian curvature measure — the normal cycle's (paper §4.3), equivalently the one
+// that makes Gauss–Bonnet local — has boundary atoms (docs/theory.md §5):
+//   φ_M(B) = ∫_{B∩M} K dA + ∫_{B∩∂M} k_g ds + Σ_{corners c ∈ B} (π − α_c),
+//   φ_T(B) = Σ_{interior v ∈ B} (2π − Σθ_v) + Σ_{boundary v ∈ B} (π − Σθ_v),
+// both totalling 2πχ. The smooth surface compared is η(T), the image of the mesh: its boundary is the image of T's
+// boundary edges (each the curve of a straight reference segment), with k_g from the metric's Christoffel symbols and
+// a corner at every boundary vertex where two such curves meet at a metric angle α ≠ π. On a rectangle chart whose
+// boundary vertices lie on the sides this is the chart's sides (k_g of the coordinate curves) and its four corners;
+// on a disk chart (spherical cap, hyperbolic disk) it is the inscribed polygon's chords, whose k_g and small turnings
+// add up to the circle's ∫k_g ds to O(h²) (the triangles tile that polygon, not the disk).
+
+struct CurvatureMeasureOptions {
+  MeasureRegion region = MeasureRegion::GeodesicBall;
+  // true (default): the boundary atoms above on both sides. false: interior vertices' deficits against ∫K dA only (the
+  // behaviour before boundary terms, a one-sided bias of −5 % to −1 % in balls that reach the boundary). No effect on
+  // closed surfaces.
+  bool boundaryTerms = true;
+  // Ball radius r as a fraction of √(area of T): the paper uses 0.05 for the Gaussian measure (§6.2).
+  double radiusFraction = 0.05;
+  // The smooth side is integrated triangle by triangle with Radon's 7-point degree-5 rule on the pulled-back density
+  // K √det g: for triangles of size h its error is O(h⁶) per unit area, ~10⁻¹⁰ relative at the coarsest meshes
+  // measured, far below the O(ε) errors of the check (the tests compare Σ ∫K dA with 2πχ). The boundary integrals ∫k_g
+  // ds use the 4-point Gauss–Legendre rule on each boundary edge's curve (or on the part a ball's rim leaves inside):
+  // error ≈ 5.6e-10·|f⁽⁸⁾| for the integrand f on the edge's parameter interval [0, 1], i.e. O(h⁸) relative for an edge
+  // of size h — like the area rule, far below the O(ε) errors of the check. Histogram of relative errors over
+  // [−histogramRange, histogramRange] in `histogramBins` bins (paper Fig. 12: ±0.1), and the band counted as "within"
+  // (paper: ±0.05).
+  double histogramRange = 0.1;
+  int histogramBins = 40;
+  double withinBand = 0.05;
+  // Called with (balls done, balls in all) after every hundredth of the balls and after the last; may be empty. The
+  // check's cost is Σ over vertices of the ball's size, and the radius is a fixed fraction of √area, so a ball holds a
+  // fixed fraction (≈ π·0.05² ≈ 0.8 %) of the vertices: O(V²), minutes from a few 10⁵ vertices on.
+  std::function<void(int, int)> progress;
+};
+
+struct CurvatureMeasureResult {
+  double radius = 0;                  // r used for the balls
+  std::vector<double> discrete;       // φ_T(B_v) per vertex
+  std::vector<double> smooth;         // φ_M(η(B_v)) per vertex
+  std::vector<double> absoluteScale;  // |φ_M|(η(B_v)), the total variation of the smooth measure on the ball: ∫|K| dA
+                                      // (for a triangle cut by the rim, its ∫|K| times the share of its barycentric
+                                      // area inside), plus ∫|k_g| ds and Σ |π − α| with boundary terms. The
+                                      // normalization of relative errors.
+  std::vector<double> relativeError;  // (φ_T − φ_M) / absoluteScale; 0 where the measure vanishes on the ball
+  double meanAbsoluteError = 0;       // the paper's e_G
+  double maxAbsoluteError = 0;
+  double fractionWithinBand = 0;  // of vertices with |relative error| < withinBand
+  std::vector<int> histogram;     // counts per bin; out-of-range errors go to the end bins
+  // Σ over all triangles of ∫K dA: the smooth total curvature over the region the mesh covers (2πχ for a closed
+  // surface, by Gauss–Bonnet), a check that the triangles' images tile the surface.
+  double smoothTotalCurvature = 0;
+  // With boundary terms: Σ over T's boundary edges of ∫k_g ds plus Σ over its boundary vertices of π − α, so that
+  // smoothTotalCurvature + smoothBoundaryCurvature = 2πχ (Gauss–Bonnet for η(T)); 0 otherwise.
+  double smoothBoundaryCurvature = 0;
+};
+
+// `referencePoints` holds one point per vertex of `mesh`, on the reference surface of `metric`'s chart. The mesh must
+// be Euclidean (output lengths measured in the original metric). The regions B_v are chosen by options.region. With
+// boundary terms, a mesh with boundary on a sphere chart is rejected (InputError naming the boundary edge); on the
+// other charts (planar or polar-disk reference) a mesh covering part of the surface is measured with η(T)'s boundary.
+CurvatureMeasureResult gaussianCurvatureMeasure(const IntrinsicTriangulation& mesh,
+                                                const std::vector<Eigen::Vector3d>& referencePoints,
+                                                const SmoothMetric& metric,
+                                                const CurvatureMeasureOptions& options = {});
+
+// The two measures of one region B = {p : d(p) < r}, d given at every vertex (`level`) and interpolated linearly inside
+// triangles and along boundary edges, measured exactly as a GeodesicBall region (options.boundaryTerms applies;
+// region, radiusFraction and the histogram fields are not used). For closed-form checks with exact distances.
+struct RegionCurvatureMeasure {
+  double discrete = 0, smooth = 0, absoluteScale = 0;
+};
+RegionCurvatureMeasure curvatureMeasureOfSublevelSet(const IntrinsicTriangulation& mesh,
+                                                     const std::vector<Eigen::Vector3d>& referencePoints,
+                                                     const SmoothMetric& metric, const std::vector<double>& level,
+                                                     double r, const CurvatureMeasureOptions& options = {});
+
+// The geodesic curvature at chart point `uv` of a chart curve with velocity `velocity` and acceleration `acceleration`
+// (chart coordinates), signed against the chart's orientation: positive when the curve turns toward its left normal
+// (c' rotated by +90° in the (u, v) orientation). k_g = √det g · det[c', ∇_{c'}c'] / |c'|³_g with
+// ∇_{c'}c' = c'' + Γ(c', c') (do Carmo §4-4); for v = const, u increasing, it is √(EG − F²) Γ²₁₁ / E^{3/2}.
+double geodesicCurvature(const SmoothMetric& metric, const Eigen::Vector2d& uv, const Eigen::Vector2d& velocity,
+                         const Eigen::Vector2d& acceleration);
+
+// The chart images of one mesh triangle, for callers that integrate other densities over it: the integral of f(u, v)
+// over the reference triangle (xa, xb, xc) pulled back to the chart, with periodic seams unwrapped.
+QuadratureResult integrateOverReferenceTriangle(const SmoothMetric& metric, const ChartFunction& density,
+                                                const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
+                                                const Eigen::Vector3d& xc, const QuadratureOptions& options = {});
+
+}  // namespace conformesh::intrinsic

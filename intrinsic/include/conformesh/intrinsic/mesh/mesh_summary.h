@@ -1,0 +1,30 @@
+// mesh_summary.h — the intrinsic report of a triangulation that `conformesh info` prints: topology (components, χ,
+// genus, boundary loops), curvature totals and the Gauss–Bonnet residual, angle and length ranges, Delaunay-ness.
+#pragma once
+
+#include <vector>
+
+#include "conformesh/intrinsic/mesh/curvature.h"
+#include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
+
+namespace conformesh::intrinsic {
+
+struct MeshSummary {
+  Background background = Background::Euclidean;
+  int vertices = 0, edges = 0, faces = 0;
+  std::vector<ComponentTopology> components;
+  int boundaryLoops = 0;
+  int eulerCharacteristic = 0;
+  // Σ genus over components: for a connected surface, its genus.
+  int genus = 0;
+  CurvatureTotals curvature;
+  double totalArea = 0;
+  double minCornerAngle = 0, maxCornerAngle = 0;  // radians
+  double minEdgeLength = 0, maxEdgeLength = 0;
+  int nonDelaunayEdges = 0;        // interior edges with delaunayMargin < −DelaunayOptions::tolerance
+  double nonDelaunayFraction = 0;  // of interior edges
+};
+
+MeshSummary summarize(const IntrinsicTriangulation& tri);
+
+}  // namespace conformesh::intrinsic

@@ -1,0 +1,494 @@
+// gaussian_curvature_measure.cpp — per-vertex discrete and smooth Gaussian curvature measures over graph-geodesic balls
+// (paper eqs. 1 and 5), with the smooth side integrated triangle by triangle on the chart's reference surface, and on a
+// surface with boundary the boundary atoms: ∫k_g ds along the images of the boundary edges and the turning π − α at
+// the boundary vertices (smooth), π − Σθ at the boundary vertices (discrete).
+#include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <queue>
+#include <string>
+
+#include <Eigen/LU>
+
+#include "conformesh/intrinsic/mesh/curvature.h"
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/metric/reference_surface.h"
+
+namespace conformesh::intrinsic {
+
+namespace {
+
+// The 7-point degree-5 rule on the triangle (Radon 1948; Strang–Fix): nodes as (s, t) in the unit triangle
+// {s, t ≥ 0, s + t ≤ 1} (barycentric (1 − s − t, s, t)), weights summing to 1.
+constexpr double kA1 = 0.059715871789769820, kB1 = 0.470142064105115090, kW1 = 0.132394152788506181;
+constexpr double kA2 = 0.797426985353087322, kB2 = 0.101286507323456339, kW2 = 0.125939180544827153;
+constexpr double kNodes[7][2] = {{1.0 / 3, 1.0 / 3}, {kB1, kB1}, {kA1, kB1}, {kB1, kA1},
+                                 {kB2, kB2},         {kA2, kB2}, {kB2, kA2}};
+constexpr double kWeights[7] = {0.225, kW1, kW1, kW1, kW2, kW2, kW2};
+
+// The pulled-back curvature density ρ(s, t) = K √det g |∂(u,v)/∂(s,t)| of one mesh triangle, sampled at the seven
+// nodes. From those samples: ∫K dA and ∫|K| dA over the triangle (the degree-5 rule: error O(h⁶) relative to the
+// integral for a triangle of size h, far below the O(ε) errors being measured), and the least-squares quadratic q(s, t)
+// through them, which the rim of a ball integrates over cut triangles (midpoint rule, exact for quadratics).
+struct FaceDensity {
+  double integral = 0, absIntegral = 0;
+  double orientation = 1;     // +1 when the face's vertex order is counter-clockwise in the (u, v) chart, else −1
+  std::array<double, 6> q{};  // q = q0 + q1 s + q2 t + q3 s² + q4 st + q5 t²
+
+  double at(double s, double t) const {
+    return q[0] + q[1] * s + q[2] * t + q[3] * s * s + q[4] * s * t + q[5] * t * t;
+  }
+  // ∫ q over the (s, t)-triangle p0 p1 p2.
+  double over(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2) const {
+    const Eigen::Vector2d a = p1 - p0, b = p2 - p0;
+    const double area = 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+    const Eigen::Vector2d m0 = 0.5 * (p0 + p1), m1 = 0.5 * (p1 + p2), m2 = 0.5 * (p2 + p0);
+    return area * (at(m0.x(), m0.y()) + at(m1.x(), m1.y()) + at(m2.x(), m2.y())) / 3;
+  }
+};
+
+// The 6 × 7 least-squares operator from node values to quadratic coefficients, computed once.
+const Eigen::Matrix<double, 6, 7>& quadraticFit() {
+  static const Eigen::Matrix<double, 6, 7> fit = [] {
+    Eigen::Matrix<double, 7, 6> V;
+    for (int i = 0; i < 7; ++i) {
+      const double s = kNodes[i][0], t = kNodes[i][1];
+      V.row(i) << 1, s, t, s * s, s * t, t * t;
+    }
+    return Eigen::Matrix<double, 6, 7>((V.transpose() * V).inverse() * V.transpose());
+  }();
+  return fit;
+}
+
+FaceDensity sampleFace(const ChartDomain& d, const ChartFunction& density, const Eigen::Vector3d& y0,
+                       const Eigen::Vector3d& y1, const Eigen::Vector3d& y2) {
+  const Eigen::Vector3d es = y1 - y0, et = y2 - y0;
+  Eigen::Matrix<double, 7, 1> values;
+  FaceDensity fd;
+  for (int i = 0; i < 7; ++i) {
+    const Eigen::Vector3d x = y0 + kNodes[i][0] * es + kNodes[i][1] * et;
+    Eigen::Vector2d ds, dt;
+    chartPoint(d, x, es, &ds);
+    chartPoint(d, x, et, &dt);
+    const Eigen::Vector2d uv = chartCoordinates(d, x);
+    const double jacobian = ds.x() * dt.y() - ds.y() * dt.x();
+    if (i == 0) fd.orientation = jacobian < 0 ? -1 : 1;  // at the centroid, away from any pole
+    values[i] = density(uv.x(), uv.y()) * std::abs(jacobian);
+    fd.integral += 0.5 * kWeights[i] * values[i];  // the unit triangle has area 1/2
+    fd.absIntegral += 0.5 * kWeights[i] * std::abs(values[i]);
+  }
+  const Eigen::Matrix<double, 6, 1> q = quadraticFit() * values;
+  for (int k = 0; k < 6; ++k) fd.q[k] = q[k];
+  return fd;
+}
+
+// === boundary atoms
+
+// 4-point Gauss–Legendre on [0, 1] (exact for degree 7): nodes (1 ± x)/2, weights w/2, x and w the classical ones.
+constexpr double kGlX1 = 0.339981043584856265, kGlX2 = 0.861136311594052575;
+constexpr double kGlW1 = 0.652145154862546143, kGlW2 = 0.347854845137453857;
+constexpr double kGlNodes[4] = {0.5 * (1 - kGlX2), 0.5 * (1 - kGlX1), 0.5 * (1 + kGlX1), 0.5 * (1 + kGlX2)};
+constexpr double kGlWeights[4] = {0.5 * kGlW2, 0.5 * kGlW1, 0.5 * kGlW1, 0.5 * kGlW2};
+
+// Position, velocity and acceleration in the chart of the curve that a straight reference segment x(t) = x0 + t·e
+// maps to: on planar reference surfaces (rectangle, cylinder, torus) the chart is the reference plane, so c' = e and
+// c'' = 0; on the disk's plane the chart is polar, (u, v) = (φ, ρ), and ρ' = p·q/ρ, ρ'' = (|q|² − ρ'²)/ρ,
+// φ' = (p × q)/ρ², φ'' = −2 φ' ρ'/ρ for p = x(t), q = e (never at the pole: boundary edges lie on or inside ρ = v1 > 0,
+// away from the centre). Sphere charts have no boundary; a mesh with boundary on one is rejected before this is called.
+struct CurveJet {
+  Eigen::Vector2d uv, d1, d2;
+};
+CurveJet segmentJet(const ChartDomain& d, const Eigen::Vector3d& x0, const Eigen::Vector3d& e, double t) {
+  const Eigen::Vector3d x = x0 + t * e;
+  CurveJet c;
+  c.uv = chartCoordinates(d, x);
+  if (d.shape() == ChartShape::Disk) {
+    const Eigen::Vector2d p = x.head<2>(), q = e.head<2>();
+    const double rho = p.norm(), drho = p.dot(q) / rho, dphi = (p.x() * q.y() - p.y() * q.x()) / (rho * rho);
+    c.d1 = {dphi, drho};
+    c.d2 = {-2 * dphi * drho / rho, (q.squaredNorm() - drho * drho) / rho};
+  } else {
+    c.d1 = e.head<2>();
+    c.d2.setZero();
+  }
+  return c;
+}
+
+// √det g · det[c', ∇_{c'}c'] and |c'|²_g at one point: ∇_{c'}c' = c'' + g⁻¹ w with w_l = Γ_{l,ij} c'^i c'^j
+// = ((c'^u ∂_u g + c'^v ∂_v g) c')_l − ½ c'ᵀ (∂_l g) c' (Christoffel symbols of the first kind).
+struct CurvatureTerms {
+  double signedTurn = 0, speed2 = 0;
+};
+CurvatureTerms curvatureTerms(const MetricJet& j, const Eigen::Vector2d& c1, const Eigen::Vector2d& c2) {
+  const Eigen::Matrix2d dg = c1.x() * j.gu + c1.y() * j.gv;
+  Eigen::Vector2d w = dg * c1;
+  w.x() -= 0.5 * c1.dot(j.gu * c1);
+  w.y() -= 0.5 * c1.dot(j.gv * c1);
+  const Eigen::Vector2d a = c2 + j.g.inverse() * w;
+  return {std::sqrt(j.g.determinant()) * (c1.x() * a.y() - c1.y() * a.x()), c1.dot(j.g * c1)};
+}
+
+struct SignedIntegral {
+  double value = 0, absValue = 0;
+};
+
+// ∫ k_g ds over the parameter interval [t0, t1] of the curve of reference segment x0 + t·e, k_g signed toward the
+// side `side` (+1: the chart's left, −1: its right): the integrand k_g |c'|_g = side · √det g det[c', ∇c'] / |c'|²_g.
+SignedIntegral segmentCurvature(const SmoothMetric& metric, const ChartDomain& d, const Eigen::Vector3d& x0,
+                                const Eigen::Vector3d& e, double side, double t0, double t1) {
+  SignedIntegral out;
+  for (int i = 0; i < 4; ++i) {
+    const CurveJet c = segmentJet(d, x0, e, t0 + (t1 - t0) * kGlNodes[i]);
+    const CurvatureTerms k = curvatureTerms(metric.jet(c.uv.x(), c.uv.y()), c.d1, c.d2);
+    const double f = side * k.signedTurn / k.speed2;
+    out.value += kGlWeights[i] * (t1 - t0) * f;
+    out.absValue += kGlWeights[i] * (t1 - t0) * std::abs(f);
+  }
+  return out;
+}
+
+// Everything the regions are measured from: the per-face smooth densities, the discrete atoms, and on a mesh with
+// boundary the per-boundary-halfedge ∫k_g ds and per-boundary-vertex smooth turning.
+struct MeasureContext {
+  const HalfedgeMesh& m;
+  const std::vector<Eigen::Vector3d>& ref;
+  const SmoothMetric& metric;
+  ChartDomain domain;
+  bool boundaryTerms;
+  std::vector<FaceDensity> face;
+  std::vector<double> atom;  // discrete: 2π − Σθ inside, π − Σθ on the boundary (0 there without terms)
+  std::vector<SignedIntegral> edgeKg;  // per halfedge; only boundary halfedges are filled
+  std::vector<double> turning;         // per vertex: π − α at boundary vertices (smooth), else 0
+  double smoothTotal = 0, smoothBoundary = 0;
+
+  MeasureContext(const IntrinsicTriangulation& mesh, const std::vector<Eigen::Vector3d>& referencePoints,
+                 const SmoothMetric& sm, bool withBoundary)
+      : m(mesh.mesh), ref(referencePoints), metric(sm), domain(sm.domain()), boundaryTerms(withBoundary) {
+    if (mesh.background != Background::Euclidean)
+      throw InputError(
+          "curvature measure: the mesh's lengths must be Euclidean (measured in the original metric), "
+          "found " +
+          toString(mesh.background));
+    if (static_cast<int>(ref.size()) != m.nVertices())
+      throw InputError("curvature measure: expected one reference point per vertex (" + std::to_string(m.nVertices()) +
+                       "), found " + std::to_string(ref.size()));
+    // Smooth side, once per triangle: ∫K dA and ∫|K| dA over the triangle's image, and the quadratic fit of the
+    // density for triangles that a ball's rim cuts.
+    const ChartFunction kDensity = curvatureDensity(metric);
+    face.resize(m.nFaces());
+    for (int f = 0; f < m.nFaces(); ++f) {
+      const Eigen::Vector3d& a = ref[m.faceVertex(f, 0)];
+      face[f] = sampleFace(domain, kDensity, a, unwrapNear(domain, a, ref[m.faceVertex(f, 1)]),
+                           unwrapNear(domain, a, ref[m.faceVertex(f, 2)]));
+      smoothTotal += face[f].integral;
+    }
+    atom = vertexCurvatures(mesh);
+    turning.assign(m.nVertices(), 0.0);
+    edgeKg.assign(m.nHalfedges(), {});
+    for (int v = 0; v < m.nVertices(); ++v)
+      if (!boundaryTerms && m.isBoundaryVertex(v)) atom[v] = 0;
+    if (!boundaryTerms) return;
+    const ChartShape shape = domain.shape();
+    for (int h = 0; h < m.nHalfedges(); ++h) {
+      if (m.twin(h) != kInvalid) continue;
+      if (shape == ChartShape::Sphere)
+        throw InputError("curvature measure: edge " + std::to_string(m.edge(h)) + " (vertices " +
+                         std::to_string(m.tail(h)) + "–" + std::to_string(m.tip(h)) +
+                         ") is a boundary edge, but boundary terms are not available on the sphere chart (its "
+                         "reference is the gnomonic sphere); expected a closed mesh, or boundaryTerms = false");
+      // The face lies to the left of its halfedge in the mesh's orientation, which is the chart's left when the face
+      // is counter-clockwise in the chart: k_g is measured toward the interior.
+      edgeKg[h] =
+          segmentCurvature(metric, domain, ref[m.tail(h)], segment(h), face[HalfedgeMesh::face(h)].orientation, 0, 1);
+      smoothBoundary += edgeKg[h].value;
+    }
+    for (int v = 0; v < m.nVertices(); ++v) {
+      if (!m.isBoundaryVertex(v)) continue;
+      turning[v] = vertexTurning(v);
+      smoothBoundary += turning[v];
+    }
+  }
+
+  // Reference vector of halfedge h, tail to tip, unwrapped across periodic seams.
+  Eigen::Vector3d segment(int h) const {
+    const Eigen::Vector3d& x0 = ref[m.tail(h)];
+    return unwrapNear(domain, x0, ref[m.tip(h)]) - x0;
+  }
+
+  // π − α at boundary vertex v, α ∈ (0, 2π) the metric angle of η(T) there: from the outgoing boundary curve's tangent
+  // b counter-clockwise (in the mesh's orientation, through the interior) to the reversed incoming tangent a.
+  double vertexTurning(int v) const {
+    const int hOut = m.vertexHalfedge(v);
+    int h = hOut;
+    for (int n = m.nextOutgoing(h); n != kInvalid; n = m.nextOutgoing(n)) h = n;
+    const int hIn = HalfedgeMesh::prev(h);  // the incoming boundary halfedge closes the fan
+    const Eigen::Vector3d& xv = ref[v];
+    const Eigen::Vector2d b = segmentJet(domain, xv, segment(hOut), 0).d1;
+    const Eigen::Vector3d xt = unwrapNear(domain, xv, ref[m.tail(hIn)]);
+    const Eigen::Vector2d a = -segmentJet(domain, xt, xv - xt, 1).d1;
+    const Eigen::Vector2d uv = chartCoordinates(domain, xv);
+    const Eigen::Matrix2d g = metric.g(uv.x(), uv.y());
+    const double side = face[HalfedgeMesh::face(hOut)].orientation;
+    double alpha = std::atan2(side * std::sqrt(g.determinant()) * (b.x() * a.y() - b.y() * a.x()), b.dot(g * a));
+    if (alpha < 0) alpha += 2 * M_PI;
+    return M_PI - alpha;
+  }
+
+  // The two measures and the scale of {d < r} (GeodesicBall semantics) over the candidate vertices `reached` (which
+  // must hold every vertex within r and all their neighbours), d read through distanceOf; `stamp` marks visited faces.
+  template <class Distance>
+  RegionCurvatureMeasure sublevelSet(const std::vector<int>& reached, const Distance& distanceOf, double r, int stamp,
+                                     std::vector<int>& faceStamp) const {
+    RegionCurvatureMeasure out;
+    for (int x : reached) {
+      if (distanceOf(x) >= r) continue;
+      out.discrete += atom[x];
+      if (boundaryTerms && m.isBoundaryVertex(x)) {
+        out.smooth += turning[x];
+        out.absoluteScale += std::abs(turning[x]);
+        // The boundary edges with an end inside: the outgoing one always, the incoming one when its tail is outside
+        // (else it is counted from there). The part inside is where the linearly interpolated d is below r, cut at
+        // the same parameter as the triangle it bounds.
+        const int hOut = m.vertexHalfedge(x);
+        int h = hOut;
+        for (int n = m.nextOutgoing(h); n != kInvalid; n = m.nextOutgoing(n)) h = n;
+        const int hIn = HalfedgeMesh::prev(h);
+        for (int e : {hOut, hIn}) {
+          const double d0 = distanceOf(m.tail(e)), d1 = distanceOf(m.tip(e));
+          if (e == hIn && d0 < r) continue;
+          SignedIntegral k;
+          if (d0 < r && d1 < r) {
+            k = edgeKg[e];
+          } else {
+            const double t = (r - d0) / (d1 - d0);
+            const double side = face[HalfedgeMesh::face(e)].orientation;
+            k = d0 < r ? segmentCurvature(metric, domain, ref[m.tail(e)], segment(e), side, 0, t)
+                       : segmentCurvature(metric, domain, ref[m.tail(e)], segment(e), side, t, 1);
+          }
+          out.smooth += k.value;
+          out.absoluteScale += k.absValue;
+        }
+      }
+    }
+    for (int x : reached) {
+      if (distanceOf(x) >= r) continue;
+      const int start = m.vertexHalfedge(x);
+      int h = start;
+      do {
+        const int f = HalfedgeMesh::face(h);
+        h = m.nextOutgoing(h);
+        if (faceStamp[f] == stamp) continue;
+        faceStamp[f] = stamp;
+        const double d[3] = {distanceOf(m.faceVertex(f, 0)), distanceOf(m.faceVertex(f, 1)),
+                             distanceOf(m.faceVertex(f, 2))};
+        int inside = 0;
+        for (double dk : d) inside += dk < r;
+        if (inside == 3) {
+          out.smooth += face[f].integral;
+          out.absoluteScale += face[f].absIntegral;
+          continue;
+        }
+        // The rim d = r cuts the triangle (d interpolated linearly): integrate the face's quadratic density over the
+        // part inside, one or two sub-triangles in the face's (s, t) = (b1, b2) coordinates.
+        const Eigen::Vector2d corner[3] = {{0, 0}, {1, 0}, {0, 1}};
+        auto cut = [&](int i, int j, double& t) {  // the rim's crossing of edge i → j, i inside, j outside
+          t = (r - d[i]) / (d[j] - d[i]);
+          return Eigen::Vector2d((1 - t) * corner[i] + t * corner[j]);
+        };
+        double fraction = 0, ti = 0, tj = 0;
+        if (inside == 1) {
+          const int i = d[0] < r ? 0 : (d[1] < r ? 1 : 2), j = (i + 1) % 3, k = (i + 2) % 3;
+          const Eigen::Vector2d pj = cut(i, j, ti), pk = cut(i, k, tj);
+          out.smooth += face[f].over(corner[i], pj, pk);
+          fraction = ti * tj;
+        } else {
+          const int o = d[0] >= r ? 0 : (d[1] >= r ? 1 : 2), i = (o + 1) % 3, j = (o + 2) % 3;
+          const Eigen::Vector2d pi = cut(i, o, ti), pj = cut(j, o, tj);
+          out.smooth += face[f].over(corner[i], corner[j], pj) + face[f].over(corner[i], pj, pi);
+          fraction = 1 - (1 - ti) * (1 - tj);
+        }
+        out.absoluteScale += fraction * face[f].absIntegral;
+      } while (h != kInvalid && h != start);
+    }
+    return out;
+  }
+
+  // Theorem 3.4's region: the relative interior (in M) of the union of the triangles whose three vertices are within
+  // r — its triangles, the boundary edges of M on them, and the vertices whose whole fan is in it.
+  template <class Distance>
+  RegionCurvatureMeasure triangleUnion(const std::vector<int>& reached, const Distance& distanceOf, double r, int stamp,
+                                       std::vector<int>& faceStamp) const {
+    RegionCurvatureMeasure out;
+    for (int x : reached) {
+      const int start = m.vertexHalfedge(x);
+      int h = start;
+      do {
+        const int f = HalfedgeMesh::face(h);
+        if (faceStamp[f] != stamp && distanceOf(m.faceVertex(f, 0)) < r && distanceOf(m.faceVertex(f, 1)) < r &&
+            distanceOf(m.faceVertex(f, 2)) < r) {
+          faceStamp[f] = stamp;
+          out.smooth += face[f].integral;
+          out.absoluteScale += face[f].absIntegral;
+          if (boundaryTerms)
+            for (int k = 0; k < 3; ++k) {
+              const int e = HalfedgeMesh::halfedge(f, k);
+              if (m.twin(e) != kInvalid) continue;
+              out.smooth += edgeKg[e].value;
+              out.absoluteScale += edgeKg[e].absValue;
+            }
+        }
+        h = m.nextOutgoing(h);
+      } while (h != kInvalid && h != start);
+    }
+    for (int x : reached) {
+      if (distanceOf(x) >= r || (!boundaryTerms && m.isBoundaryVertex(x))) continue;
+      bool inside = true;
+      const int start = m.vertexHalfedge(x);
+      int h = start;
+      do {
+        inside = inside && faceStamp[HalfedgeMesh::face(h)] == stamp;
+        h = m.nextOutgoing(h);
+      } while (h != kInvalid && h != start && inside);
+      if (!inside) continue;
+      out.discrete += atom[x];
+      out.smooth += turning[x];
+      out.absoluteScale += std::abs(turning[x]);
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+QuadratureResult integrateOverReferenceTriangle(const SmoothMetric& metric, const ChartFunction& density,
+                                                const Eigen::Vector3d& xa, const Eigen::Vector3d& xbIn,
+                                                const Eigen::Vector3d& xcIn, const QuadratureOptions& options) {
+  const ChartDomain d = metric.domain();
+  const Eigen::Vector3d xb = unwrapNear(d, xa, xbIn), xc = unwrapNear(d, xa, xcIn);
+  const Eigen::Vector3d es = xb - xa, et = xc - xa;
+  // x(s, t) = xa + s·es + t·et on the unit triangle; on the reference sphere chartPoint reads only the direction of x,
+  // so this is the gnomonic parametrization of the geodesic triangle. The density is pulled back with |det
+  // ∂(u,v)/∂(s,t)|.
+  const ChartFunction pulledBack = [&](double s, double t) {
+    const Eigen::Vector3d x = xa + s * es + t * et;
+    Eigen::Vector2d ds, dt;
+    chartPoint(d, x, es, &ds);
+    chartPoint(d, x, et, &dt);
+    const Eigen::Vector2d uv = chartCoordinates(d, x);
+    return density(uv.x(), uv.y()) * std::abs(ds.x() * dt.y() - ds.y() * dt.x());
+  };
+  return integrateOverTriangle(pulledBack, {0, 0}, {1, 0}, {0, 1}, options);
+}
+
+double geodesicCurvature(const SmoothMetric& metric, const Eigen::Vector2d& uv, const Eigen::Vector2d& velocity,
+                         const Eigen::Vector2d& acceleration) {
+  const CurvatureTerms k = curvatureTerms(metric.jet(uv.x(), uv.y()), velocity, acceleration);
+  return k.signedTurn / (k.speed2 * std::sqrt(k.speed2));
+}
+
+RegionCurvatureMeasure curvatureMeasureOfSublevelSet(const IntrinsicTriangulation& mesh,
+                                                     const std::vector<Eigen::Vector3d>& referencePoints,
+                                                     const SmoothMetric& metric, const std::vector<double>& level,
+                                                     double r, const CurvatureMeasureOptions& options) {
+  const MeasureContext ctx(mesh, referencePoints, metric, options.boundaryTerms);
+  const int nV = mesh.mesh.nVertices();
+  if (static_cast<int>(level.size()) != nV)
+    throw InputError("curvature measure: expected one level value per vertex (" + std::to_string(nV) + "), found " +
+                     std::to_string(level.size()));
+  for (int v = 0; v < nV; ++v)
+    if (!std::isfinite(level[v]))
+      throw InputError("curvature measure: the level of vertex " + std::to_string(v) + " is not finite");
+  std::vector<int> all(nV), faceStamp(mesh.mesh.nFaces(), -1);
+  for (int v = 0; v < nV; ++v) all[v] = v;
+  return ctx.sublevelSet(
+      all, [&](int x) { return level[x]; }, r, 0, faceStamp);
+}
+
+CurvatureMeasureResult gaussianCurvatureMeasure(const IntrinsicTriangulation& mesh,
+                                                const std::vector<Eigen::Vector3d>& referencePoints,
+                                                const SmoothMetric& metric, const CurvatureMeasureOptions& options) {
+  const HalfedgeMesh& m = mesh.mesh;
+  if (!(options.radiusFraction > 0))
+    throw InputError("curvature measure: the ball radius fraction must be positive, found " +
+                     std::to_string(options.radiusFraction));
+  const MeasureContext ctx(mesh, referencePoints, metric, options.boundaryTerms);
+  CurvatureMeasureResult r;
+  r.smoothTotalCurvature = ctx.smoothTotal;
+  r.smoothBoundaryCurvature = ctx.smoothBoundary;
+
+  // === the regions
+  r.radius = options.radiusFraction * std::sqrt(totalArea(mesh));
+  // Distances are needed up to one edge beyond the rim, so that every triangle the rim cuts has all three.
+  const double reach = r.radius + *std::max_element(mesh.edgeLengths.begin(), mesh.edgeLengths.end());
+  const int nV = m.nVertices();
+  r.discrete.assign(nV, 0.0);
+  r.smooth.assign(nV, 0.0);
+  r.absoluteScale.assign(nV, 0.0);
+  r.relativeError.assign(nV, 0.0);
+  std::vector<double> dist(nV, INFINITY);
+  std::vector<int> reached;
+  std::vector<int> faceStamp(m.nFaces(), -1), vertexStamp(nV, -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  auto relax = [&](int y, double dy) {
+    if (dy <= reach && dy < dist[y]) {
+      dist[y] = dy;
+      heap.push({dy, y});
+    }
+  };
+  for (int v = 0; v < nV; ++v) {
+    reached.clear();
+    dist[v] = 0;
+    heap.push({0.0, v});
+    while (!heap.empty()) {
+      const auto [dv, x] = heap.top();
+      heap.pop();
+      if (dv > dist[x]) continue;
+      if (vertexStamp[x] != v) {
+        vertexStamp[x] = v;
+        reached.push_back(x);
+      }
+      const int start = m.vertexHalfedge(x);
+      int h = start;
+      do {
+        relax(m.tip(h), dv + mesh.length(h));
+        // A boundary fan's last neighbour is reached through the incoming boundary halfedge.
+        const int hp = HalfedgeMesh::prev(h);
+        if (m.twin(hp) == kInvalid) relax(m.tail(hp), dv + mesh.length(hp));
+        h = m.nextOutgoing(h);
+      } while (h != kInvalid && h != start);
+    }
+    auto distanceOf = [&](int x) { return vertexStamp[x] == v ? dist[x] : INFINITY; };
+    const RegionCurvatureMeasure b = options.region == MeasureRegion::GeodesicBall
+                                         ? ctx.sublevelSet(reached, distanceOf, r.radius, v, faceStamp)
+                                         : ctx.triangleUnion(reached, distanceOf, r.radius, v, faceStamp);
+    for (int x : reached) dist[x] = INFINITY;
+    r.discrete[v] = b.discrete;
+    r.smooth[v] = b.smooth;
+    r.absoluteScale[v] = b.absoluteScale;
+    r.relativeError[v] = b.absoluteScale > 0 ? (b.discrete - b.smooth) / b.absoluteScale : 0.0;
+    if (options.progress && ((v + 1) % ((nV + 99) / 100) == 0 || v + 1 == nV)) options.progress(v + 1, nV);
+  }
+
+  // === statistics
+  r.histogram.assign(options.histogramBins, 0);
+  int within = 0;
+  double sumAbs = 0;
+  for (int v = 0; v < nV; ++v) {
+    const double err = std::abs(r.discrete[v] - r.smooth[v]);
+    sumAbs += err;
+    r.maxAbsoluteError = std::max(r.maxAbsoluteError, err);
+    const double rel = r.relativeError[v];
+    within += std::abs(rel) < options.withinBand;
+    const double t = (rel + options.histogramRange) / (2 * options.histogramRange);
+    const int bin = std::clamp(static_cast<int>(std::floor(t * options.histogramBins)), 0, options.histogramBins - 1);
+    ++r.histogram[bin];
+  }
+  r.meanAbsoluteError = sumAbs / nV;
+  r.fractionWithinBand = static_cast<double>(within) / nV;
+  return r;
+}
+
+}  // namespace conformesh::intrinsic

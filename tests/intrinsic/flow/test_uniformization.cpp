@@ -1,0 +1,682 @@
+// test_uniformization.cpp — T0 → T0* on real meshes of CGAL's data set (genus 0, 1, 2, 3, a disk, an annulus, domains
+// with three and four boundary loops): interior angle sums 2π in the background geometry from the lengths as written to
+// and read back from PLY, Gauss–Bonnet with the area term, boundary loops concyclic, λ consistent with the Penner
+// relation; the flat torus of a torus of revolution against its exact modulus i·r/√(R² − r²), with the order of a
+// log–log fit; an ellipsoid against its conformal latitude; a planar annulus (already a circle domain) reproduced
+// exactly; inadmissible inputs reported.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Sparse>
+
+#include "conformesh/intrinsic/measure/convergence_order.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
+#include "conformesh/intrinsic/flow/discrete_conformal.h"
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/mesh/intrinsic_flips.h"
+#include "conformesh/intrinsic/mesh/mesh_generators.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/flow/uniformization.h"
+
+#include "support/flat_torus_modulus.h"
+#include "support/test_meshes.h"
+
+using namespace conformesh::intrinsic;
+using conformesh::testing::flatTorusModulus;
+
+namespace {
+
+std::string dataFile(const std::string& name) {
+  return std::string(CONFORMESH_TEST_DATA_DIR) + "/" + name;
+}
+
+// Writes T0* with λ to PLY and reads it back: the checks below use only what a user of the file would see.
+IntrinsicTriangulation roundTrip(const Uniformization& u, const std::string& name) {
+  MeshData data = fromTriangulation(u.uniform);
+  data.vertexProperties["lambda"] = u.lambda;
+  const std::string path = std::string(CONFORMESH_TEST_DATA_DIR) + "/uniformized-" + name + ".ply";
+  writeMesh(data, path);
+  const MeshData back = readMesh(path);
+  REQUIRE(back.background == u.uniform.background);
+  REQUIRE(back.vertexProperties.count("lambda") == 1);
+  std::remove(path.c_str());
+  return toTriangulation(back);
+}
+
+double maxInteriorAngleError(const IntrinsicTriangulation& tri) {
+  const std::vector<double> sums = angleSums(tri);
+  double worst = 0;
+  for (int v = 0; v < tri.mesh.nVertices(); ++v)
+    if (!tri.mesh.isBoundaryVertex(v)) worst = std::max(worst, std::abs(sums[v] - 2 * M_PI));
+  return worst;
+}
+
+// Relative radius deviation of each boundary loop of a flat triangulation laid out in the plane: circle through three
+// spread vertices, then max | |p − c| − R | / R over the loop.
+std::vector<std::pair<double, double>> loopCircles(const IntrinsicTriangulation& tri) {
+  const std::vector<Eigen::Vector2d> p = layoutFlat(tri);
+  std::vector<std::pair<double, double>> out;  // (radius, relative deviation)
+  for (const auto& loop : tri.mesh.boundaryLoops()) {
+    const int n = static_cast<int>(loop.size());
+    const Eigen::Vector2d A = p[tri.mesh.tail(loop[0])], B = p[tri.mesh.tail(loop[n / 3])],
+                          C = p[tri.mesh.tail(loop[2 * n / 3])];
+    const double d = 2 * (A.x() * (B.y() - C.y()) + B.x() * (C.y() - A.y()) + C.x() * (A.y() - B.y()));
+    const Eigen::Vector2d c(
+        (A.squaredNorm() * (B.y() - C.y()) + B.squaredNorm() * (C.y() - A.y()) + C.squaredNorm() * (A.y() - B.y())) / d,
+        (A.squaredNorm() * (C.x() - B.x()) + B.squaredNorm() * (A.x() - C.x()) + C.squaredNorm() * (B.x() - A.x())) /
+            d);
+    const double R = (A - c).norm();
+    double dev = 0;
+    for (int h : loop) dev = std::max(dev, std::abs((p[tri.mesh.tail(h)] - c).norm() - R) / R);
+    out.emplace_back(R, dev);
+  }
+  return out;
+}
+
+// Checks the Penner relation c*_ij = e^{−(λ_i+λ_j)/2} c_ij (λ = −w) on every edge whose endpoints are unchanged and
+// which lies in no face touched by a flip (such an edge was never flipped).
+void checkLambda(const IntrinsicTriangulation& input, const Uniformization& u) {
+  std::vector<char> touched(input.mesh.nFaces(), 0);
+  for (const PtolemyFlip& f : u.correspondence.flips()) touched[f.faceA] = touched[f.faceB] = 1;
+  int checked = 0;
+  double worst = 0;
+  for (int e = 0; e < input.mesh.nEdges(); ++e) {
+    const int h = u.uniform.mesh.edgeHalfedge(e), h0 = input.mesh.edgeHalfedge(e);
+    if (touched[HalfedgeMesh::face(h)] ||
+        (u.uniform.mesh.twin(h) != kInvalid && touched[HalfedgeMesh::face(u.uniform.mesh.twin(h))]))
+      continue;
+    const int a = u.uniform.mesh.tail(h), b = u.uniform.mesh.tip(h);
+    REQUIRE(((a == input.mesh.tail(h0) && b == input.mesh.tip(h0)) ||
+             (b == input.mesh.tail(h0) && a == input.mesh.tip(h0))));
+    const double predicted =
+        std::exp(-0.5 * (u.lambda[a] + u.lambda[b])) * pennerFromLength(input.background, input.edgeLengths[e]);
+    worst = std::max(worst, std::abs(pennerFromLength(u.uniform.background, u.uniform.edgeLengths[e]) / predicted - 1));
+    ++checked;
+  }
+  CHECK(checked > 0);
+  // The genus-0 chords come from positions on the sphere (layout, stereographic map, Möbius centring): 1e-9 relative.
+  CHECK(worst < 1e-9);
+}
+
+struct Expect {
+  const char* file;
+  UniformizationTarget target;
+  Background background;
+  int genus, loops;
+};
+
+}  // namespace
+
+TEST_CASE("real meshes of each topology are uniformized to angle sums 2π, Gauss–Bonnet and circles") {
+  const Expect cases[] = {
+      {"blobby.off", UniformizationTarget::Sphere, Background::Spherical, 0, 0},
+      {"handle.off", UniformizationTarget::Sphere, Background::Spherical, 0, 0},
+      // The cow's tail has conformal factors ~10⁻¹⁵: its lengths come from the Penner form (pennerLengths).
+      {"cow.off", UniformizationTarget::Sphere, Background::Spherical, 0, 0},
+      {"knot1.off", UniformizationTarget::FlatTorus, Background::Euclidean, 1, 0},
+      {"double-torus-example.off", UniformizationTarget::Hyperbolic, Background::Hyperbolic, 2, 0},
+      {"3torus.off", UniformizationTarget::Hyperbolic, Background::Hyperbolic, 3, 0},
+      {"elephant.off", UniformizationTarget::Hyperbolic, Background::Hyperbolic, 3, 0},
+      {"patch-01.off", UniformizationTarget::CircleDomain, Background::Euclidean, 0, 1},
+      {"mech-holes-shark.off", UniformizationTarget::CircleDomain, Background::Euclidean, 0, 4},
+      {"head.off", UniformizationTarget::CircleDomain, Background::Euclidean, 0, 3},
+  };
+  for (const Expect& c : cases) {
+    SECTION(c.file) {
+      const IntrinsicTriangulation input = toTriangulation(readMesh(dataFile(c.file)));
+      const Uniformization u = uniformize(input);
+      CHECK(u.report.target == c.target);
+      CHECK(u.report.genus == c.genus);
+      CHECK(u.report.boundaryLoops == c.loops);
+      CHECK(u.uniform.background == c.background);
+      const IntrinsicTriangulation out = roundTrip(u, c.file);
+      INFO(c.file << ": Newton steps " << u.report.newtonSteps << ", flips " << u.report.flips);
+      CHECK(maxInteriorAngleError(out) < 1e-10);
+      const CurvatureTotals totals = curvatureTotals(out);
+      CHECK(std::abs(totals.gaussBonnetResidual) < 1e-9);
+      CHECK(countNonDelaunayEdges(out) == 0);
+      const double chi = 2.0 - 2 * c.genus - c.loops;
+      if (c.target == UniformizationTarget::Sphere) CHECK(totalArea(out) == Approx(4 * M_PI).epsilon(1e-10));
+      if (c.target == UniformizationTarget::FlatTorus) CHECK(totalArea(out) == Approx(1.0).epsilon(1e-12));
+      if (c.target == UniformizationTarget::Hyperbolic) CHECK(totalArea(out) == Approx(-2 * M_PI * chi).epsilon(1e-9));
+      if (c.target == UniformizationTarget::CircleDomain) {
+        const auto circles = loopCircles(out);
+        REQUIRE(static_cast<int>(circles.size()) == c.loops);
+        double outer = 0;
+        for (const auto& [R, dev] : circles) {
+          CHECK(dev < 1e-8);
+          outer = std::max(outer, R);
+        }
+        CHECK(outer == Approx(1.0).epsilon(1e-8));  // the longest loop is the unit circle
+      }
+      checkLambda(input, u);
+    }
+  }
+}
+
+TEST_CASE("a planar annulus bounded by concentric circles is its own circle domain") {
+  // Every interior angle sum of the generated annulus is already 2π and its boundary polygons are inscribed in
+  // circles, so the solution is the input up to scale: λ is constant and no flip is needed.
+  const MeshData data = makeAnnulus({0.5, 1.0, 6});
+  const IntrinsicTriangulation input = toTriangulation(data);
+  const Uniformization u = uniformize(input);
+  CHECK(u.report.target == UniformizationTarget::CircleDomain);
+  double lo = 1e300, hi = -1e300;
+  for (double l : u.lambda) {
+    lo = std::min(lo, l);
+    hi = std::max(hi, l);
+  }
+  CHECK(hi - lo < 1e-10);
+  CHECK(std::exp(-lo) == Approx(1.0).epsilon(1e-10));  // outer radius 1 already: lengths scale by e^{w} = e^{−λ}
+}
+
+TEST_CASE("a torus of revolution converges to the flat torus of modulus i r/sqrt(R^2 - r^2)") {
+  const double R = 1.0, r = 0.4;
+  const double a = r / std::sqrt(R * R - r * r);
+  const double expected = std::max(a, 1 / a);  // Im of the reduced modulus (the period ratio ≥ 1)
+  std::vector<double> logH, logErr;
+  for (int k : {1, 2, 4}) {
+    TorusOptions options;
+    options.majorRadius = R;
+    options.minorRadius = r;
+    options.n = 25 * k;
+    options.m = 10 * k;
+    const IntrinsicTriangulation input = toTriangulation(makeTorus(options));
+    const Uniformization u = uniformize(input);
+    const std::complex<double> tau = flatTorusModulus(u.uniform);
+    const double err = std::abs(tau - std::complex<double>(0, expected));
+    logH.push_back(std::log(2 * M_PI * R / options.n));
+    logErr.push_back(std::log(err));
+  }
+  const double mx = (logH[0] + logH[1] + logH[2]) / 3, my = (logErr[0] + logErr[1] + logErr[2]) / 3;
+  double sxy = 0, sxx = 0;
+  for (int i = 0; i < 3; ++i) {
+    sxy += (logH[i] - mx) * (logErr[i] - my);
+    sxx += (logH[i] - mx) * (logH[i] - mx);
+  }
+  const double order = sxy / sxx;
+  INFO("modulus errors " << std::exp(logErr[0]) << " " << std::exp(logErr[1]) << " " << std::exp(logErr[2])
+                         << ", order " << order);
+  CHECK(order > 1.8);
+  CHECK(std::exp(logErr[2]) < 5e-3);  // measured 2.7e-3 at 100 × 40
+}
+
+TEST_CASE("an ellipsoid of revolution maps to the sphere close to its conformal latitude") {
+  // Oblate spheroid x² + y² + z²/c² = 1 (a = 1, c = 0.6), sampled by icospheres with z scaled by c. The exact
+  // conformal map to the sphere keeps the longitude and sends the geodetic latitude φ to the conformal latitude χ,
+  // asinh(tan χ) = asinh(tan φ) − e atanh(e sin φ), e² = 1 − c² (Karney; GeographicLib's AuxLatitude). It is balanced
+  // (its pushforward of the area is symmetric), so it agrees with the Möbius-centred discrete map up to a rotation:
+  // the comparison uses the rotation-invariant angles between pairs of image points.
+  const double c = 0.6, e = std::sqrt(1 - c * c);
+  std::vector<double> logH, logErr;
+  for (int level : {3, 4, 5}) {
+    MeshData data = makeIcosphere({level, 1.0});
+    for (auto& p : data.positions) p.z() *= c;
+    const IntrinsicTriangulation input = toTriangulation(data);
+    const Uniformization u = uniformize(input);
+    REQUIRE(u.report.target == UniformizationTarget::Sphere);
+    std::vector<Eigen::Vector3d> exact(data.positions.size());
+    for (std::size_t v = 0; v < exact.size(); ++v) {
+      const Eigen::Vector3d& p = data.positions[v];
+      const double lon = std::atan2(p.y(), p.x());
+      const double beta = std::atan2(p.z() / c, std::hypot(p.x(), p.y()));  // parametric latitude
+      const double phi = std::atan2(std::tan(beta), c);                     // tan φ = (a/c) tan β
+      const double chi = std::atan(std::sinh(std::asinh(std::tan(phi)) - e * std::atanh(e * std::sin(phi))));
+      exact[v] = Eigen::Vector3d(std::cos(chi) * std::cos(lon), std::cos(chi) * std::sin(lon), std::sin(chi));
+    }
+    double err = 0;
+    const int n = static_cast<int>(exact.size()), stride = std::max(1, n / 300);
+    for (int i = 0; i < n; i += stride)
+      for (int j = i + stride; j < n; j += stride) {
+        const double got = std::acos(std::clamp(u.positions[i].dot(u.positions[j]), -1.0, 1.0));
+        const double want = std::acos(std::clamp(exact[i].dot(exact[j]), -1.0, 1.0));
+        err = std::max(err, std::abs(got - want));
+      }
+    double h = 0;
+    for (double l : input.edgeLengths) h += l;
+    logH.push_back(std::log(h / input.edgeLengths.size()));
+    logErr.push_back(std::log(err));
+  }
+  const double mx = (logH[0] + logH[1] + logH[2]) / 3, my = (logErr[0] + logErr[1] + logErr[2]) / 3;
+  double sxy = 0, sxx = 0;
+  for (int i = 0; i < 3; ++i) {
+    sxy += (logH[i] - mx) * (logErr[i] - my);
+    sxx += (logH[i] - mx) * (logH[i] - mx);
+  }
+  INFO("angle errors " << std::exp(logErr[0]) << " " << std::exp(logErr[1]) << " " << std::exp(logErr[2]) << ", order "
+                       << sxy / sxx);
+  // Measured: 5.0e-4, 2.5e-4, 2.9e-4 (order 0.4): on these z-scaled icospheres the error stalls near 3e-4 (the
+  // maximum sits near the equator; docs/ricci_flow.md §6), while on the ellipsoid family's own chart discretizations
+  // the same comparison converges at order 2 (tests/embedding/test_sphere_layout.cpp): the stall belongs to the meshes.
+  // The test holds the accuracy reached here; for points on the sphere itself (c = 1) the pipeline reproduces them to
+  // 2e-8.
+  for (double le : logErr) CHECK(std::exp(le) < 6e-4);
+}
+
+TEST_CASE("genus 0: link vertices released early when clearly reflex give the sphere of releases at solutions") {
+  // The box's grid makes the star repair of its puncture take rounds: faces next to the star degenerate during the
+  // first solve, and vertices it adds turn out reflex. λ after Möbius centring is unique (up to rotations, which do not
+  // change it), so judging reflex vertices early must not change it beyond the flow tolerance.
+  GenusSurfaceOptions box;
+  box.genus = 0;
+  box.resolution = 27;  // 10 k vertices
+  const IntrinsicTriangulation input = toTriangulation(makeGenusSurface(box));
+  auto run = [&](double factor, int& earlyStops) {
+    UniformizationOptions options;
+    options.earlyReflexFactor = factor;
+    earlyStops = 0;
+    options.progress = [&](const std::string& line) {
+      if (line.find("clearly reflex") != std::string::npos) ++earlyStops;
+    };
+    return uniformize(input, options);
+  };
+  int early = 0, late = 0;
+  const Uniformization a = run(10, early), b = run(0, late);
+  INFO("Newton steps " << a.report.newtonSteps << " (early) and " << b.report.newtonSteps << " (at solutions)");
+  CHECK(early > 0);
+  CHECK(late == 0);
+  CHECK(a.report.punctureVertex == b.report.punctureVertex);
+  CHECK(a.report.newtonSteps < b.report.newtonSteps);
+  double worst = 0;
+  for (std::size_t v = 0; v < a.lambda.size(); ++v) worst = std::max(worst, std::abs(a.lambda[v] - b.lambda[v]));
+  // Both flows stop below 1e-10 rad; λ responds to the residual through the inverse Laplacian (≈ 10² here).
+  CHECK(worst < 1e-8);
+  CHECK(maxInteriorAngleError(roundTrip(a, "box-early")) < 1e-10);
+  // Möbius centring: the input's area measure (a third of each face's area at its corners) has its centroid at the
+  // origin to the tolerance, reached by Newton's method in a few iterations (the fixed step (3/4)c needed 29 here).
+  std::vector<double> weight(input.mesh.nVertices(), 0.0);
+  for (int f = 0; f < input.mesh.nFaces(); ++f)
+    for (int k = 0; k < 3; ++k) weight[input.mesh.faceVertex(f, k)] += faceArea(input, f) / 3;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  double total = 0;
+  for (std::size_t v = 0; v < weight.size(); ++v) {
+    centroid += weight[v] * a.positions[v];
+    total += weight[v];
+  }
+  CHECK((centroid / total).norm() <= UniformizationOptions().centringTolerance);
+  CHECK(a.report.centringIterations <= 6);
+}
+
+TEST_CASE("uniformize reports inputs it cannot handle") {
+  // Two disjoint triangles: two components.
+  IntrinsicTriangulation two;
+  two.mesh = HalfedgeMesh::fromFaces({{0, 1, 2}, {3, 4, 5}}, 6);
+  two.edgeLengths.assign(two.mesh.nEdges(), 1.0);
+  CHECK_THROWS_WITH(uniformize(two), Catch::Contains("2 connected components"));
+  // A flat torus asked for with a single Newton step does not converge, and says how far it got.
+  const IntrinsicTriangulation torus = toTriangulation(makeTorus({}));
+  UniformizationOptions options;
+  options.flow.maxNewtonSteps = 1;
+  CHECK_THROWS_WITH(uniformize(torus, options), Catch::Contains("did not converge") && Catch::Contains("max |"));
+}
+
+TEST_CASE("a thin appendage below double-precision resolution on the unit sphere gets exact Penner-form lengths") {
+  // CGAL's cow: the tail's conformal factor is ~10⁻¹⁵, so its vertices coincide as unit vectors; the lengths come from
+  // e^{(w_i+w_j)/2} c⁰_ij. The smallest written spherical length shows that the tail is really resolved, and the angle
+  // sums computed back from these tiny lengths (in the real-mesh test above) are 2π to 1e-10.
+  const IntrinsicTriangulation cow = toTriangulation(readMesh(dataFile("cow.off")));
+  const Uniformization u = uniformize(cow);
+  CHECK(u.report.pennerLengths);
+  const double shortest = *std::min_element(u.uniform.edgeLengths.begin(), u.uniform.edgeLengths.end());
+  INFO("shortest spherical edge " << shortest);
+  CHECK(shortest < 1e-12);
+  CHECK(shortest > 0);
+  // Ordinary meshes keep the chords of their points (angle sums 2π to round-off whatever the flow residual).
+  CHECK_FALSE(uniformize(toTriangulation(readMesh(dataFile("blobby.off")))).report.pennerLengths);
+}
+
+namespace {
+
+// A spherical cap {θ ≤ θ0} of the unit sphere triangulated in rings: the pole, then ring i = 1..N of 6i vertices at
+// polar angle θ0 i/N, consecutive rings zipped by angle; Euclidean chord lengths (an inscribed polyhedral surface).
+struct Cap {
+  IntrinsicTriangulation tri;
+  std::vector<double> theta;
+};
+
+Cap sphericalCap(double theta0, int N) {
+  Cap cap;
+  std::vector<Eigen::Vector3d> p{Eigen::Vector3d(0, 0, 1)};
+  cap.theta.push_back(0);
+  std::vector<std::vector<int>> ring{{0}};
+  for (int i = 1; i <= N; ++i) {
+    ring.emplace_back();
+    const double t = theta0 * i / N;
+    for (int j = 0; j < 6 * i; ++j) {
+      const double phi = 2 * M_PI * j / (6 * i);
+      ring.back().push_back(static_cast<int>(p.size()));
+      p.emplace_back(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t));
+      cap.theta.push_back(t);
+    }
+  }
+  std::vector<std::array<int, 3>> faces;
+  for (int i = 1; i <= N; ++i) {
+    const std::vector<int>&A = ring[i - 1], &B = ring[i];
+    const int a = static_cast<int>(A.size()), b = static_cast<int>(B.size());
+    if (a == 1) {
+      for (int k = 0; k < b; ++k) faces.push_back({A[0], B[k], B[(k + 1) % b]});
+      continue;
+    }
+    // Advance on whichever ring's next vertex comes first in angle (counter-clockwise seen from outside).
+    int j = 0, k = 0;
+    while (j < a || k < b) {
+      const double nextA = double(j + 1) / a, nextB = double(k + 1) / b;
+      if (k < b && (j == a || nextB <= nextA)) {
+        faces.push_back({A[j % a], B[k], B[(k + 1) % b]});
+        ++k;
+      } else {
+        faces.push_back({A[j % a], B[k % b], A[(j + 1) % a]});
+        ++j;
+      }
+    }
+  }
+  cap.tri.mesh = HalfedgeMesh::fromFaces(faces, static_cast<int>(p.size()));
+  cap.tri.edgeLengths.resize(cap.tri.mesh.nEdges());
+  for (int e = 0; e < cap.tri.mesh.nEdges(); ++e) {
+    const int h = cap.tri.mesh.edgeHalfedge(e);
+    cap.tri.edgeLengths[e] = (p[cap.tri.mesh.tail(h)] - p[cap.tri.mesh.tip(h)]).norm();
+  }
+  return cap;
+}
+
+}  // namespace
+
+TEST_CASE("a spherical cap converges to its stereographic projection onto the unit disk") {
+  // Independent reference: stereographic projection from the antipode of the pole is conformal and maps the cap
+  // {θ ≤ θ0} onto the disk of radius tan(θ0/2), so the conformal map to the unit disk is r(θ) = tan(θ/2)/tan(θ0/2),
+  // unique up to the disk's Möbius automorphisms. Those are removed by sending the pole's image to 0
+  // (z → (z − a)/(1 − ā z)); the remaining rotation does not change |z|. Error: max over vertices of ||z_v| − r(θ_v)|.
+  const double theta0 = 1.2;
+  std::vector<double> h, error;
+  for (int N : {8, 16, 32}) {
+    const Cap cap = sphericalCap(theta0, N);
+    REQUIRE(cap.tri.mesh.components()[0].boundaryLoops == 1);
+    const Uniformization u = uniformize(cap.tri);
+    REQUIRE(u.report.target == UniformizationTarget::CircleDomain);
+    CHECK(maxInteriorAngleError(u.uniform) < 1e-10);
+    const std::complex<double> a(u.positions[0].x(), u.positions[0].y());
+    double worst = 0;
+    for (int v = 0; v < cap.tri.mesh.nVertices(); ++v) {
+      const std::complex<double> z(u.positions[v].x(), u.positions[v].y());
+      const double r = std::abs((z - a) / (1.0 - std::conj(a) * z));
+      worst = std::max(worst, std::abs(r - std::tan(0.5 * cap.theta[v]) / std::tan(0.5 * theta0)));
+    }
+    h.push_back(theta0 / N);
+    error.push_back(worst);
+  }
+  const double order = fitLogLogSlope(h, error);
+  INFO("cap errors " << error[0] << ", " << error[1] << ", " << error[2] << ", order " << order);
+  // Vertex scaling converges at least linearly in h on Delaunay meshes (Gu–Luo–Wu, Math. Comp. 2019); this ring mesh
+  // is not regular, so no more than that is asserted; the measured order is reported in docs/ricci_flow.md.
+  CHECK(order > 0.9);
+  CHECK(error.back() < error.front());
+}
+
+namespace {
+
+// min over piecewise-linear f of the Dirichlet energy Σ_h ½ cot θ_h (f_tip − f_tail + ω_h)² (θ_h the angle opposite
+// halfedge h: the exact energy of the linear interpolant, face by face), with f = fixed[v] where fixed[v] is finite
+// and f_0 = 0 when nothing is fixed (the energy only sees differences).
+double minDirichletEnergy(const IntrinsicTriangulation& tri, const std::vector<double>& fixed,
+                          const std::vector<double>& omega) {
+  const int nv = tri.mesh.nVertices();
+  const bool pinFirst = std::none_of(fixed.begin(), fixed.end(), [](double x) { return std::isfinite(x); });
+  std::vector<int> unknown(nv, -1);
+  int n = 0;
+  for (int v = pinFirst ? 1 : 0; v < nv; ++v)
+    if (!std::isfinite(fixed[v])) unknown[v] = n++;
+  std::vector<double> known(nv, 0.0);
+  for (int v = 0; v < nv; ++v)
+    if (std::isfinite(fixed[v])) known[v] = fixed[v];
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+  for (int h = 0; h < tri.mesh.nHalfedges(); ++h) {
+    const double w = 0.5 * cotanOpposite(tri, h);
+    const int a = tri.mesh.tail(h), b = tri.mesh.tip(h);
+    // Gradient of w (f_b − f_a + c)², c the known part, with respect to the unknowns among f_a, f_b.
+    const double c = (unknown[b] < 0 ? known[b] : 0.0) - (unknown[a] < 0 ? known[a] : 0.0) + omega[h];
+    const int ia = unknown[a], ib = unknown[b];
+    if (ia >= 0) {
+      entries.emplace_back(ia, ia, w);
+      rhs[ia] += w * c;
+    }
+    if (ib >= 0) {
+      entries.emplace_back(ib, ib, w);
+      rhs[ib] -= w * c;
+    }
+    if (ia >= 0 && ib >= 0) {
+      entries.emplace_back(ia, ib, -w);
+      entries.emplace_back(ib, ia, -w);
+    }
+  }
+  Eigen::SparseMatrix<double> L(n, n);
+  L.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(L);
+  REQUIRE(solver.info() == Eigen::Success);
+  const Eigen::VectorXd x = solver.solve(rhs);
+  std::vector<double> f = known;
+  for (int v = 0; v < nv; ++v)
+    if (unknown[v] >= 0) f[v] = x[unknown[v]];
+  double energy = 0;
+  for (int h = 0; h < tri.mesh.nHalfedges(); ++h) {
+    const double d = f[tri.mesh.tip(h)] - f[tri.mesh.tail(h)] + omega[h];
+    energy += 0.5 * cotanOpposite(tri, h) * d * d;
+  }
+  return energy;
+}
+
+// Two-sided bounds on log(R/r), the conformal modulus times 2π, of a flat-with-cone-points annulus (the input's own
+// piecewise-flat surface) by the Dirichlet principle, independently of the flow. For {r < |z| < R}: the harmonic
+// measure h (0 on one loop, 1 on the other) has energy 2π/log(R/r), the angle function θ/2π (period 1 around the
+// core) has energy log(R/r)/2π, and each is the minimum over its class; piecewise-linear functions are a subclass, so
+// 2π/E_h ≤ log(R/r) ≤ 2π E*_h. The period-1 class is f + ω with ω the closed 1-form that is ±1 on the edges a dual
+// path from loop A to loop B crosses (and on its two boundary edges), 0 elsewhere.
+std::pair<double, double> annulusLogRadiusRatioBounds(const IntrinsicTriangulation& tri) {
+  const std::vector<std::vector<int>> loops = tri.mesh.boundaryLoops();
+  REQUIRE(loops.size() == 2);
+  std::vector<int> loopOf(tri.mesh.nHalfedges(), -1);
+  for (int l = 0; l < 2; ++l)
+    for (int h : loops[l]) loopOf[h] = l;
+
+  std::vector<double> fixed(tri.mesh.nVertices(), std::numeric_limits<double>::quiet_NaN());
+  for (int l = 0; l < 2; ++l)
+    for (int h : loops[l]) fixed[tri.mesh.tail(h)] = l;
+  const double energyHarmonic = minDirichletEnergy(tri, fixed, std::vector<double>(tri.mesh.nHalfedges(), 0.0));
+
+  // Breadth-first search over faces through interior edges, from the face of loop A's first halfedge to a face with a
+  // halfedge on loop B.
+  const int nf = tri.mesh.nFaces();
+  std::vector<int> cameThrough(nf, -2);  // the halfedge of the previous face crossed into this one; −1 at the start
+  const int start = HalfedgeMesh::face(loops[0][0]);
+  cameThrough[start] = -1;
+  std::vector<int> queue{start};
+  int end = -1;
+  for (std::size_t q = 0; q < queue.size() && end < 0; ++q) {
+    const int f = queue[q];
+    for (int k = 0; k < 3; ++k) {
+      const int h = HalfedgeMesh::halfedge(f, k);
+      if (loopOf[h] == 1) {
+        end = f;
+        break;
+      }
+      const int t = tri.mesh.twin(h);
+      if (t != kInvalid && cameThrough[HalfedgeMesh::face(t)] == -2) {
+        cameThrough[HalfedgeMesh::face(t)] = h;
+        queue.push_back(HalfedgeMesh::face(t));
+      }
+    }
+  }
+  REQUIRE(end >= 0);
+  std::vector<double> omega(tri.mesh.nHalfedges(), 0.0);
+  omega[loops[0][0]] = -1;  // entering the start face from outside across loop A
+  for (int k = 0; k < 3; ++k)
+    if (loopOf[HalfedgeMesh::halfedge(end, k)] == 1) {
+      omega[HalfedgeMesh::halfedge(end, k)] += 1;  // leaving the end face across loop B
+      break;
+    }
+  for (int f = end; cameThrough[f] >= 0; f = HalfedgeMesh::face(cameThrough[f])) {
+    omega[cameThrough[f]] += 1;
+    omega[tri.mesh.twin(cameThrough[f])] -= 1;
+  }
+  for (int f = 0; f < nf; ++f)  // closed: the path enters and leaves every face it visits
+    REQUIRE(omega[3 * f] + omega[3 * f + 1] + omega[3 * f + 2] == 0);
+  const double energyAngle = minDirichletEnergy(
+      tri, std::vector<double>(tri.mesh.nVertices(), std::numeric_limits<double>::quiet_NaN()), omega);
+  return {2 * M_PI / energyHarmonic, 2 * M_PI * energyAngle};
+}
+
+// Centre and radius of the circle through three spread vertices of each boundary loop of a flat triangulation laid
+// out in the plane (the frame of loopCircles, which checks that every vertex is on it).
+std::vector<std::pair<Eigen::Vector2d, double>> loopCentres(const IntrinsicTriangulation& tri) {
+  const std::vector<Eigen::Vector2d> p = layoutFlat(tri);
+  std::vector<std::pair<Eigen::Vector2d, double>> out;
+  for (const auto& loop : tri.mesh.boundaryLoops()) {
+    const int n = static_cast<int>(loop.size());
+    const Eigen::Vector2d A = p[tri.mesh.tail(loop[0])], B = p[tri.mesh.tail(loop[n / 3])],
+                          C = p[tri.mesh.tail(loop[2 * n / 3])];
+    // The centre solves (B − A)·c = (|B|² − |A|²)/2, (C − A)·c = (|C|² − |A|²)/2 (Cramer's rule).
+    const Eigen::Vector2d b = B - A, e = C - A;
+    const double rb = 0.5 * (B.squaredNorm() - A.squaredNorm()), re = 0.5 * (C.squaredNorm() - A.squaredNorm());
+    const double det = b.x() * e.y() - b.y() * e.x();
+    const Eigen::Vector2d c((rb * e.y() - re * b.y()) / det, (b.x() * re - e.x() * rb) / det);
+    out.emplace_back(c, (A - c).norm());
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a real annulus (CGAL's blobby_3cc.off, its two-loop component) becomes a circle domain of its modulus") {
+  // blobby_3cc.off holds three surfaces: two disks and a band of 701 vertices with two boundary loops, genus 0.
+  std::vector<IntrinsicTriangulation> annuli;
+  for (const MeshData& part : conformesh::testing::connectedComponents(readMesh(dataFile("blobby_3cc.off")))) {
+    IntrinsicTriangulation tri = toTriangulation(part);
+    const ComponentTopology topology = tri.mesh.components().at(0);
+    if (topology.genus == 0 && topology.boundaryLoops == 2) annuli.push_back(std::move(tri));
+  }
+  REQUIRE(annuli.size() == 1);
+  const IntrinsicTriangulation& input = annuli[0];
+
+  const Uniformization u = uniformize(input);
+  CHECK(u.report.target == UniformizationTarget::CircleDomain);
+  CHECK(u.report.boundaryLoops == 2);
+  const IntrinsicTriangulation out = roundTrip(u, "blobby_3cc-annulus");
+  INFO("Newton steps " << u.report.newtonSteps << ", flips " << u.report.flips);
+  CHECK(maxInteriorAngleError(out) < 1e-10);
+  CHECK(std::abs(curvatureTotals(out).gaussBonnetResidual) < 1e-9);
+  CHECK(countNonDelaunayEdges(out) == 0);
+  const auto circles = loopCircles(out);
+  REQUIRE(circles.size() == 2);
+  for (const auto& [R, dev] : circles) CHECK(dev < 1e-8);
+  CHECK(std::max(circles[0].first, circles[1].first) == Approx(1.0).epsilon(1e-8));  // the longer loop: unit circle
+  checkLambda(input, u);
+
+  // The modulus against the input's own Dirichlet-principle bracket. Two nested circles (radii R1, R2, centres d
+  // apart) are Möbius-equivalent to {r < |z| < R} with log(R/r) = acosh((R1² + R2² − d²)/(2 R1 R2)), the inversive
+  // distance (Möbius-invariant; for d = 0 it is cosh log(R1/R2)).
+  const auto fits = loopCentres(out);
+  const double R1 = fits[0].second, R2 = fits[1].second, d = (fits[0].first - fits[1].first).norm();
+  const double logRatio = std::acosh((R1 * R1 + R2 * R2 - d * d) / (2 * R1 * R2));
+  const auto [lower, upper] = annulusLogRadiusRatioBounds(input);
+  INFO("log(R/r): flow " << logRatio << " (radii " << R1 << ", " << R2 << ", centres " << d << " apart), Dirichlet "
+                         << "bracket [" << lower << ", " << upper << "]");
+  CHECK(lower < upper);
+  CHECK(logRatio > lower);
+  CHECK(logRatio < upper);
+}
+
+namespace {
+
+// A flat cylinder's figures from its own lengths: the worst |angle sum − π| over boundary vertices (both loops closed
+// geodesics) and the loops' lengths.
+std::pair<double, std::vector<double>> cylinderEnds(const IntrinsicTriangulation& tri) {
+  const std::vector<double> sums = angleSums(tri);
+  double worst = 0;
+  for (int v = 0; v < tri.mesh.nVertices(); ++v)
+    if (tri.mesh.isBoundaryVertex(v)) worst = std::max(worst, std::abs(sums[v] - M_PI));
+  std::vector<double> lengths;
+  for (const auto& loop : tri.mesh.boundaryLoops()) {
+    double total = 0;
+    for (int h : loop) total += tri.length(h);
+    lengths.push_back(total);
+  }
+  return {worst, lengths};
+}
+
+}  // namespace
+
+TEST_CASE("an annulus too long for planar coordinates (CGAL's blade.off) becomes the flat cylinder of its modulus") {
+  // blade.off is a tube of circumference ≈ 24 and length ≈ 130: its circle domain's inner circle would be ~10⁻¹⁷ of
+  // the outer one, below planar double precision. The flat cylinder (circumference 2π, both loops geodesics) is the
+  // same conformal class by z = e^{iw}; its height is log(R/r), which the input's own Dirichlet bracket must contain.
+  const IntrinsicTriangulation input = toTriangulation(readMesh(dataFile("blade.off")));
+  const auto [lower, upper] = annulusLogRadiusRatioBounds(input);
+  REQUIRE(lower > std::log(1e-8 / std::numeric_limits<double>::epsilon()));  // really beyond 1e-8 in the plane
+  const Uniformization u = uniformize(input);
+  CHECK(u.report.target == UniformizationTarget::FlatCylinder);
+  CHECK(u.uniform.background == Background::Euclidean);
+  CHECK(u.positions.empty());
+  const IntrinsicTriangulation out = roundTrip(u, "blade");
+  INFO("Newton steps " << u.report.newtonSteps << ", flips " << u.report.flips << ", height " << u.report.cylinderHeight
+                       << ", Dirichlet bracket [" << lower << ", " << upper << "]");
+  CHECK(maxInteriorAngleError(out) < 1e-10);
+  const auto [worstEnd, lengths] = cylinderEnds(out);
+  CHECK(worstEnd < 1e-10);  // geodesic loops, from the written lengths
+  REQUIRE(lengths.size() == 2);
+  for (double l : lengths) CHECK(l == Approx(2 * M_PI).epsilon(1e-10));
+  CHECK(std::abs(curvatureTotals(out).gaussBonnetResidual) < 1e-9);
+  CHECK(countNonDelaunayEdges(out) == 0);
+  // Area of the cylinder = 2π × height, from the written lengths.
+  CHECK(totalArea(out) == Approx(2 * M_PI * u.report.cylinderHeight).epsilon(1e-12));
+  CHECK(u.report.cylinderHeight > lower);
+  CHECK(u.report.cylinderHeight < upper);
+  checkLambda(input, u);
+}
+
+TEST_CASE(
+    "flat cylinders of growing modulus: circles of the right modulus, or the flat cylinder, never a wrong domain") {
+  // The 24-gon tube of height H is exactly a flat cylinder, conformal to {r < |z| < 1} with log(1/r) = 2πH/C. Where
+  // the plane resolves the inner circle: every loop a circle and the modulus within the discretization error of
+  // vertex scaling (measured 0.6 % at log(1/r) = 8). Beyond: the flat cylinder, of height log(1/r).
+  const int n = 24;
+  const double C = 2 * n * std::sin(M_PI / n);
+  // log(R/r) = 2π/n ≈ 0.26 with one row of triangles: every vertex on a loop (the pre-check has no unknowns then).
+  for (double logRatio : {2 * M_PI / n, 4.0, 8.0, 12.0, 15.0, 17.0, 20.0, 30.0}) {
+    const int rows = std::max(1, static_cast<int>(std::lround(logRatio * n / (2 * M_PI))));
+    const double height = logRatio * C / (2 * M_PI);
+    const IntrinsicTriangulation input = toTriangulation(conformesh::testing::cylinderGrid(n, rows, height));
+    INFO("log(R/r) = " << logRatio);
+    const Uniformization u = uniformize(input);
+    const IntrinsicTriangulation out = roundTrip(u, "cylinder");
+    CHECK(maxInteriorAngleError(out) < 1e-10);
+    if (u.report.target == UniformizationTarget::CircleDomain) {
+      const auto fits = loopCentres(out);
+      const auto circles = loopCircles(out);
+      for (const auto& [R, dev] : circles) CHECK(dev < 1e-8);
+      const double R1 = fits[0].second, R2 = fits[1].second, d = (fits[0].first - fits[1].first).norm();
+      CHECK(std::acosh((R1 * R1 + R2 * R2 - d * d) / (2 * R1 * R2)) == Approx(logRatio).epsilon(0.01));
+    } else {
+      REQUIRE(u.report.target == UniformizationTarget::FlatCylinder);
+      CHECK(logRatio > 10);  // the plane resolves the smaller moduli (measured: circle domains up to 8)
+      const auto [worstEnd, lengths] = cylinderEnds(out);
+      CHECK(worstEnd < 1e-10);
+      for (double l : lengths) CHECK(l == Approx(2 * M_PI).epsilon(1e-10));
+      // The rows are staggered by half a step, so the tube is not developable and its modulus is 2πH/C only up to the
+      // discretization (measured 5.4e-4 relative at 12 … 30, as the circle domains' 0.6 % at 8); the input's own
+      // Dirichlet bracket is the sharp, independent check. On these tubes it closes to a point (the piecewise-linear
+      // harmonic measure and angle function are exact), so it holds to the round-off of two sparse solves, 1e-10.
+      CHECK(u.report.cylinderHeight == Approx(logRatio).epsilon(0.01));
+      const auto [lower, upper] = annulusLogRadiusRatioBounds(input);
+      CHECK(u.report.cylinderHeight >= lower * (1 - 1e-10));
+      CHECK(u.report.cylinderHeight <= upper * (1 + 1e-10));
+    }
+  }
+}

@@ -1,0 +1,42 @@
+// Tests for convergence_study.h: the paper's claims measured by log–log fits over a sweep of meshes (Theorem 3.4,
+// §6): e_G falls at least linearly in the mean circumradius, the mean circumradius like 1/√vertices, the area error
+// like ε²; and on every mesh the smallest angle (original metric) is ≥ 20.7°, no triangle of the map back is inverted,
+// and Gauss–Bonnet holds to 1e-9. The mean smallest angle is not bounded by any theorem; with the default smoothing
+// pass (ConvergenceOptions::remesh.refinement.smoothingPasses = 1, vertex_smoothing.h) every mesh of the studies in
+// docs/studies.md has it ≥ 46.7° (unsmoothed it scatters by ±1° between nearby ε and dips to 44.7°–46°), so each mesh
+// is held to issue 6's 46°, and the sweep's average to the paper's 46.5°.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/refine/pipeline/convergence_study.h"
+
+using namespace conformesh;
+using namespace conformesh::intrinsic;
+using namespace conformesh::refine;
+
+TEST_CASE("convergence sweeps on the ellipsoid and the Kerr horizon at a/M = 0.95") {
+  for (const auto& [name, params] : {std::pair<std::string, std::map<std::string, double>>{"ellipsoid", {{"f", 0.3}}},
+                                     {"kerr-newman", {{"a", 0.95}}}}) {
+    const auto metric = makeMetric(name, params);
+    ConvergenceOptions o;
+    o.targetVertices = {2000, 4000, 8000, 16000};
+    const ConvergenceStudy s = runConvergenceStudy(*metric, o);
+    INFO(s.metric << ": e_G order " << s.orderErrorVsCircumradius << ", circumradius order "
+                  << s.orderCircumradiusVsVertices << ", area order " << s.orderAreaVsCircumradius);
+    CHECK(s.orderErrorVsCircumradius >= 0.9);
+    CHECK(s.orderCircumradiusVsVertices == Approx(-0.5).margin(0.1));
+    CHECK(s.orderAreaVsCircumradius >= 1.8);
+    double meanOfMeans = 0;
+    for (const ConvergenceLevel& L : s.levels) {
+      INFO(L.vertices << " vertices");
+      CHECK(L.quality.minAngleDeg >= 20.7);
+      CHECK(L.quality.meanMinAngleDeg >= 46);
+      meanOfMeans += L.quality.meanMinAngleDeg / s.levels.size();
+      CHECK(L.invertedTriangles == 0);
+      CHECK(std::abs(L.quality.gaussBonnetResidual) < 1e-9);
+    }
+    CHECK(meanOfMeans >= 46.5);
+  }
+}

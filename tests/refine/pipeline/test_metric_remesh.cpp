@@ -1,0 +1,143 @@
+// Tests for remesh.h: the whole pipeline on smooth metrics of each topology — the output is a homeomorphic image of
+// the surface (no inverted triangle), its lengths come from the original metric (Gauss–Bonnet exact, area close to
+// the smooth area), its circumradii respect ε, and its angles, measured with its own lengths, respect the shape bound.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <memory>
+
+#include "conformesh/intrinsic/measure/convergence_order.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_quadrature.h"
+#include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/refine/pipeline/metric_remesh.h"
+
+using namespace conformesh;
+using namespace conformesh::intrinsic;
+using namespace conformesh::refine;
+
+namespace {
+RemeshResult run(const SmoothMetric& m, double eps, int t0 = 10) {
+  RemeshOptions o;
+  o.epsilon = eps;
+  o.t0Resolution = t0;
+  return remeshMetric(m, o);
+}
+}  // namespace
+
+TEST_CASE("remesh: closed surfaces of genus 0 and 1, and disks") {
+  struct Case {
+    std::unique_ptr<SmoothMetric> metric;
+    double eps;
+  };
+  std::vector<Case> cases;
+  cases.push_back({makeMetric("ellipsoid", {{"f", 0.3}}), 0.04});
+  cases.push_back({makeMetric("kerr-newman", {{"a", 0.99}}), 0.08});
+  cases.push_back({makeMetric("torus", {{"R", 1.0}, {"r", 0.4}}), 0.04});
+  cases.push_back({makeMetric("spherical-cap", {}), 0.05});
+  for (const Case& c : cases) {
+    const SmoothMetric& m = *c.metric;
+    INFO(m.description());
+    const RemeshResult r = run(m, c.eps);
+    const int chi = m.domain().eulerCharacteristic();
+    CHECK(r.mesh.mesh.eulerCharacteristic() == chi);
+    CHECK(r.invertedTriangles == 0);
+    // Gauss–Bonnet with the output's own lengths: Σ deficits + Σ turning = 2πχ.
+    CHECK(std::abs(curvatureTotals(r.mesh).gaussBonnetResidual) < 1e-9);
+    // Lengths are the metric's: the mesh area is the smooth area up to the O(ε²) of chords against arcs.
+    const double area = metricArea(m).value;
+    CHECK(std::abs(totalArea(r.mesh) - area) < 0.02 * area);
+    // Quality in the original metric: the refinement's 20.7° bound survives the pull-back.
+    CHECK(r.quality.minAngleDeg >= 20.7);
+    CHECK(r.quality.meanMinAngleDeg >= 40);
+    CHECK(r.mesh.mesh.nVertices() > r.t0Vertices);
+  }
+}
+
+TEST_CASE("remesh: the conformal factor grades the mesh so that circumradii are at most ε in the original metric") {
+  // Kerr with a = 0 is the round sphere of radius r₊ = 2M: the smooth λ ≡ log 2, so the uniformized bound ε·e^(−λ)
+  // pulls back to ε. T0's lengths are arcs 2θ of that sphere while the flow compares chords (Penner lengths), so the
+  // discrete λ is log 2 + log((θ/2)/sin(θ/2)) ≈ log 2 + θ²/24: below 1.7e-3 for T0's edges (θ ≤ 0.2 at resolution 10).
+  const auto m = makeMetric("kerr-newman", {{"a", 0.0}});
+  const double eps = 0.1;
+  const RemeshResult r = run(*m, eps);
+  for (double l : r.lambda) CHECK(l == Approx(std::log(2.0)).margin(1.7e-3));
+  CHECK(r.quality.maxCircumradius <= 1.05 * eps);
+  CHECK(r.quality.meanCircumradius > 0.5 * eps);
+}
+
+TEST_CASE("remesh: a Bezier patch with corners keeps its boundary and meets the 20.7 degree bound") {
+  // The teapot body patch's chart is a rectangle: Auto flattens it keeping the boundary (boundary_flattening.h), so
+  // λ = 0 on the boundary and the four corners stay corners of the domain, refined with straight (chord) sides.
+  const auto m = makeMetric("teapot-patch", {{"patch", 4.0}});
+  const double eps = 0.02;
+  const RemeshResult r = run(*m, eps);
+  REQUIRE(r.diskTarget == DiskTarget::KeepBoundary);
+  CHECK(r.uniformization.target == UniformizationTarget::FlatKeepBoundary);
+  CHECK(r.invertedTriangles == 0);
+  CHECK(std::abs(curvatureTotals(r.mesh).gaussBonnetResidual) < 1e-9);
+  // Ruppert's bound arcsin(1/(2√2)) = 20.7° with B = √2, in the ORIGINAL metric (the output's own lengths).
+  CHECK(r.quality.minAngleDeg >= 20.7);
+  CHECK(r.quality.meanMinAngleDeg >= 40);
+  // λ is bounded, so the grading holds everywhere, corners included (5 % for the discrete λ and the pull-back).
+  CHECK(r.quality.maxCircumradius <= 1.05 * eps);
+  // Chords against arcs: the area is the smooth area up to O(ε²) = 4e-4 relative.
+  const double area = metricArea(*m).value;
+  CHECK(std::abs(totalArea(r.mesh) - area) < 1e-3 * area);
+  // Boundary vertices are on the chart's boundary (the refinement split the chords of T0's boundary edges, which the
+  // correspondence keeps on T0's boundary edges), where λ = 0.
+  int onBoundary = 0;
+  for (int v = 0; v < r.mesh.mesh.nVertices(); ++v) {
+    if (!r.mesh.mesh.isBoundaryVertex(v)) continue;
+    ++onBoundary;
+    const Eigen::Vector2d& c = r.chart[v];
+    CHECK(std::min({c.x(), 1 - c.x(), c.y(), 1 - c.y()}) < 1e-12);
+    CHECK(std::abs(r.lambda[v]) < 1e-12);
+  }
+  CHECK(onBoundary > 4 * 20);  // the sides were refined, not only T0's boundary kept
+}
+
+TEST_CASE("remesh: on the teapot patch the Gaussian curvature measure converges at order >= 1 in the mesh size") {
+  // Theorem 3.4: e_G = mean |φ_T(B_v) − φ_M(B_v)| = O(ε). The smooth side integrates the metric's own K, independent
+  // of the mesh's angles. Four sizes a factor √2 apart (≈ 1.1k to 8k vertices); the fitted slope must reach 0.9, the
+  // issue's threshold (the full sweep measures 1.31, docs/studies.md).
+  const auto m = makeMetric("teapot-patch", {{"patch", 4.0}});
+  std::vector<double> meanR, eG;
+  for (double eps : {0.056, 0.04, 0.028, 0.02}) {
+    const RemeshResult r = run(*m, eps);
+    REQUIRE(r.invertedTriangles == 0);
+    CHECK(r.quality.minAngleDeg >= 20.7);
+    const CurvatureMeasureResult g = gaussianCurvatureMeasure(r.mesh, r.reference, *m);
+    meanR.push_back(r.quality.meanCircumradius);
+    eG.push_back(g.meanAbsoluteError);
+  }
+  INFO("e_G " << eG[0] << " " << eG[1] << " " << eG[2] << " " << eG[3] << " slope " << fitLogLogSlope(meanR, eG));
+  CHECK(fitLogLogSlope(meanR, eG) >= 0.9);
+}
+
+TEST_CASE("remesh: disk targets") {
+  CHECK(parseDiskTarget("auto") == DiskTarget::Auto);
+  CHECK(parseDiskTarget("circle") == DiskTarget::Circle);
+  CHECK(parseDiskTarget("keep-boundary") == DiskTarget::KeepBoundary);
+  CHECK_THROWS_WITH(parseDiskTarget("square"), Catch::Contains("'square'"));
+  // A polar disk chart goes to the circle by default; a closed surface cannot keep a boundary it does not have.
+  const auto cap = makeMetric("spherical-cap", {});
+  CHECK(run(*cap, 0.1).diskTarget == DiskTarget::Circle);
+  const auto sphere = makeMetric("sphere", {});
+  RemeshOptions o;
+  o.epsilon = 0.2;
+  o.diskTarget = DiskTarget::KeepBoundary;
+  CHECK_THROWS_WITH(remeshMetric(*sphere, o), Catch::Contains("topological disk"));
+}
+
+TEST_CASE("remesh: bad parameters are named") {
+  const auto m = makeMetric("sphere", {});
+  RemeshOptions o;
+  o.epsilon = 0;
+  REQUIRE_THROWS_WITH(remeshMetric(*m, o), Catch::Contains("--eps"));
+  o.epsilon = NAN;
+  REQUIRE_THROWS_WITH(remeshMetric(*m, o), Catch::Contains("--eps"));
+}
