@@ -1,0 +1,40 @@
+#!/usr/bin/env python3
+"""include_graph.py [ROOT] — the include graph of conformesh's libraries: edges between concept folders (lib/sub), and
+any cycle between modules (a header and its .cpp are one module). Standard library only."""
+import os, re, subprocess, sys, collections
+root = sys.argv[1] if len(sys.argv) > 1 else '.'
+os.chdir(root)
+files = [f for f in subprocess.check_output(['git', 'ls-files']).decode().split() if re.match(r'(intrinsic|embedding|refine)/.*\.(h|cpp)$', f)]
+def key(path):  # file path -> (lib/sub) concept
+    m = re.match(r'(\w+)/(?:include/conformesh/\w+|src)/(.*)/[^/]+$', path)
+    if m: return m.group(1) + '/' + m.group(2)
+    return re.match(r'(\w+)/', path).group(1) + '/(root)'
+def resolve(f, inc):
+    lib = f.split('/')[0]
+    if inc.startswith('conformesh/'):
+        l = inc.split('/')[1]; return f'{l}/include/{inc}'
+    return f'{lib}/src/{inc}'
+edges = collections.Counter(); graph = collections.defaultdict(set)
+# a module: a header, its .cpp and its private *_internal.h
+norm = lambda p: re.sub(r'(_internal)?\.(h|cpp)$', '', p.replace('/include/conformesh/' + p.split('/')[0], '/src'))
+for f in files:
+    for inc in re.findall(r'#include\s+"([^"]+)"', open(f).read()):
+        t = resolve(f, inc)
+        if not os.path.exists(t): continue
+        a, b = key(f), key(t)
+        if a != b: edges[(a, b)] += 1
+        if norm(f) != norm(t): graph[norm(f)].add(norm(t))
+for (a, b), n in sorted(edges.items()): print(f'{a:24s} -> {b:24s} {n}')
+# cycles between file stems (a header and its cpp are one node)
+sys.setrecursionlimit(10000); color = {}; cycles = []
+def dfs(u, stack):
+    color[u] = 1; stack.append(u)
+    for v in graph[u]:
+        if color.get(v) == 1: cycles.append(stack[stack.index(v):] + [v])
+        elif not color.get(v): dfs(v, stack)
+    stack.pop(); color[u] = 2
+for u in list(graph):
+    if not color.get(u): dfs(u, [])
+print('module include cycles:', len(cycles))
+for c in cycles: print('  ' + ' -> '.join(c))
+sys.exit(1 if cycles else 0)
