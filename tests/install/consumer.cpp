@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
     const MeshSummary s = summarize(tri);
     std::cout << "genus " << s.genus << ", Gauss-Bonnet residual " << s.curvature.gaussBonnetResidual << "\n";
     return std::abs(s.curvature.gaussBonnetResidual) < 1e-9 ? 0 : 1;
-  } catch (const InputError& e) {
+  } catch (const conformesh::InputError& e) {
     std::cerr << e.what() << "\n";
     return 2;
   }
