@@ -6,7 +6,7 @@
 #
 # MESH_DIR holds CGAL's meshes as the test build extracts them (default build/tests/data/meshes). Exit status 0 when
 # every file is identical, 1 when one differs (each is named), 2 for a usage error. Timings in the text reports are
-# not compared (stdout is kept with lines holding "s)" or " s " removed).
+# not compared: lines with seconds are dropped from text reports, keys and columns named "seconds" from JSON and CSV.
 set -uo pipefail
 [ $# -ge 2 ] || { echo "usage: compare_outputs.sh OLD_BINARY NEW_BINARY [MESH_DIR] [WORK_DIR]" >&2; exit 2; }
 old=$(realpath "$1"); new=$(realpath "$2")
@@ -34,8 +34,23 @@ run_all() {  # $1 = binary, $2 = output folder
   "$cm" -q layout "$meshes/double-torus-example.off" -o double-torus.svg --tiles 2 > layout.txt 2>&1
   "$cm" -q layout "$meshes/knot1.off" -o knot1-layout.ply > layout-knot.txt 2>&1
   "$cm" -q convergence teapot-patch --vertices 300,600,1200 --t0-resolution 4 -o teapot --no-plot --json \
-    > teapot.json 2> teapot.err
+    > teapot-stdout.json 2> teapot.err
   for f in *.txt *.err; do grep -v -E '[0-9.]+ ?s\b|elapsed|time' "$f" > "$f.filtered" || true; rm -f "$f"; done
+  /usr/bin/python3 - <<'PY'
+import csv, glob, json
+def strip(x):  # wall-clock figures are not outputs
+    if isinstance(x, dict): return {k: strip(v) for k, v in x.items() if 'second' not in k}
+    if isinstance(x, list): return [strip(v) for v in x]
+    return x
+for f in glob.glob('*.json'):
+    try: data = json.load(open(f))
+    except ValueError: continue
+    json.dump(strip(data), open(f, 'w'), indent=1, sort_keys=True)
+for f in glob.glob('*.csv'):
+    rows = list(csv.reader(open(f)))
+    keep = [i for i, h in enumerate(rows[0]) if 'second' not in h]
+    csv.writer(open(f, 'w', newline='')).writerows([[r[i] for i in keep] for r in rows])
+PY
 }
 
 ( run_all "$old" "$work/old" )

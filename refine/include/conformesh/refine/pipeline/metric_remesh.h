@@ -1,8 +1,9 @@
-// remesh.h — the whole pipeline for a surface given by a smooth metric (the paper's §5.1, intrinsically):
-// discretize the chart into T0 → uniformize T0 by discrete Ricci flow (T0*, conformal factor λ) → Delaunay refinement
-// of T0* graded by e^(−λ) (T1*) → pull back: each vertex of T1* goes to its point of T0 through the flow's
-// correspondence, then to the chart by T0's piecewise-linear parametrization, and every edge of the output T1 gets the
-// length of its curve in the ORIGINAL metric.
+// metric_remesh.h — the pipeline for a surface given by a SMOOTH METRIC (the paper's §5.1, intrinsically):
+// discretize the chart into T0 → uniformize T0 by discrete Ricci flow (T0*, conformal factor λ) → Delaunay-refine T0*
+// graded by e^(−λ) (T1*) → pull back: each vertex of T1* to its point of T0 through the flow's correspondence, then
+// to the chart, and every edge of the output T1 gets the length of its curve in the ORIGINAL metric.
+// Pure functions of their arguments: no files, no global state (progress only through the callback).
+// Derivations: docs/refinement.md §9 and "Surfaces whose boundary has corners"; the command: docs/cli.md.
 #pragma once
 
 #include <functional>
@@ -42,26 +43,21 @@ struct RemeshOptions {
   // Size bound ε in the ORIGINAL metric: circumradii of the output are ≈ ε or less (paper §4.2.3: the uniformized
   // bound ε·e^(−λ) pulls back to ε). Required, > 0.
   double epsilon = 0;
-  // Shape bound B (circumradius / shortest edge) of the refinement; see RefineOptions::ratioBound.
-  double ratioBound = 1.4142135623730951;
-  // λ ≡ 0: uniform in the uniformized domain (not on the surface); for comparisons only.
-  bool uniform = false;
-  // T0: resolution of the discretization of the chart (DiscretizationOptions::resolution); the discrete conformal map
-  // of T0 is the only approximation of the smooth one, so it should be fine enough that its angle distortion is well
-  // below the refinement's angle bound. 0 = automatic: about a quarter of the output's expected vertex count, at a
-  // resolution between 8 and 32 (≈ 650 to 10⁴ vertices for sphere charts; other charts are sized by a probe at
-  // resolution 8), since refinement only adds vertices to T0.
+  double ratioBound = 1.4142135623730951;  // shape bound B (circumradius / shortest edge), RefineOptions::ratioBound
+  bool uniform = false;                    // λ ≡ 0: uniform in the uniformized domain, for comparisons
+  // Resolution of T0 (DiscretizationOptions::resolution). 0 = automatic: about a quarter of the output's expected
+  // vertex count, at a resolution between 8 and 32.
   int t0Resolution = 0;
-  // Target of the uniformization when the chart is a topological disk (ignored for closed charts).
-  DiskTarget diskTarget = DiskTarget::Auto;
+  DiskTarget diskTarget = DiskTarget::Auto;  // when the chart is a topological disk (ignored for closed charts)
   intrinsic::DiscretizationOptions discretization;
   intrinsic::UniformizationOptions uniformization;
-  // Passed through to the refinement (epsilon, ratioBound and lambda are set from the fields above). Unsmoothed by
-  // default (the paper's refinement, and the fast one: a smoothing pass makes the refinement stage ~3.5× slower);
-  // `refinement.smoothingPasses = 1` lifts the mean smallest angle above 46° on every mesh of docs/studies.md at the
-  // cost documented there (the convergence study's default).
+  // Passed through to the refinement (epsilon, ratioBound and lambda are set from the fields above); unsmoothed by
+  // default, the paper's refinement.
   RefineOptions refinement;
   std::function<void(const std::string&)> progress;
+
+  // What is wrong with these options ("" when valid): ε must be positive and finite.
+  std::string validate() const;
 };
 
 struct RemeshTimes {
@@ -88,7 +84,8 @@ struct RemeshResult {
   RemeshTimes seconds;
 };
 
-// Throws InputError for bad parameters (naming them) and ConvergenceError when a stage does not converge.
+// The whole pipeline. Throws InputError with options.validate()'s text or for a chart the disk target does not fit,
+// ConvergenceError when a stage does not converge (or T0 is too coarse for the metric's lengths).
 RemeshResult remeshMetric(const intrinsic::SmoothMetric& metric, const RemeshOptions& options);
 
 // The first two stages alone, for sweeps that refine one uniformization at several ε (`conformesh convergence`).
@@ -103,11 +100,12 @@ struct UniformizedMetric {
   double discretizeSeconds = 0, uniformizeSeconds = 0;
 };
 UniformizedMetric uniformizeMetric(const intrinsic::SmoothMetric& metric, const RemeshOptions& options);
-// Stages 3 and 4 on a prepared uniformization (options.epsilon, ratioBound, uniform and refinement are used).
+// Stages 3 and 4 on a prepared uniformization (options.epsilon, ratioBound, uniform and refinement are used); throws
+// as remeshMetric.
 RemeshResult remeshUniformized(const UniformizedMetric& prepared, const intrinsic::SmoothMetric& metric,
                                const RemeshOptions& options);
 
-// The output for files: faces, edges with their lengths, positions where the metric has an embedding, and per-vertex
+// The output for files (remesh_output.cpp): faces, edges with their lengths, positions where the metric has an embedding, and per-vertex
 // properties u, v (chart), lambda, curvature (angle deficit / boundary turning), smooth_curvature (K of the metric at
 // the vertex), input_face and input_b0..2 (the vertex's place on T0); comments name the metric and ε.
 intrinsic::MeshData toMeshData(const RemeshResult& result, const intrinsic::SmoothMetric& metric, double epsilon);
