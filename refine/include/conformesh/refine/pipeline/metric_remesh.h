@@ -22,18 +22,12 @@
 
 namespace conformesh::refine {
 
-// What a chart with one boundary loop (a topological disk) is uniformized to.
+// What a chart with one boundary loop (a topological disk) is uniformized to (docs/refinement.md, "Surfaces whose
+// boundary has corners").
 enum class DiskTarget {
-  // KeepBoundary when the chart has corners (a Rectangle chart: a Bézier patch, a graph over a square), Circle
-  // otherwise (a polar Disk chart, whose boundary is smooth).
-  Auto,
-  // The unit disk (uniformization.h, CircleDomain); refinement splits the boundary on the circle. At a boundary corner
-  // of angle α the conformal map behaves like z^{π/α}, so λ is unbounded there (docs/refinement.md).
-  Circle,
-  // The flat metric with the boundary's lengths kept (boundary_flattening.h): λ = 0 on the boundary, bounded, every
-  // corner keeps its angle; the domain is the polygon of T0's boundary chords and refinement splits its sides at their
-  // midpoints (BoundarySplit::Geodesic).
-  KeepBoundary,
+  Auto,          // KeepBoundary for a Rectangle chart (it has corners), Circle otherwise
+  Circle,        // the unit disk (CircleDomain); the boundary is split on the circle; λ unbounded at corners
+  KeepBoundary,  // flat, boundary lengths kept (boundary_flattening.h); sides split at midpoints (Geodesic)
 };
 std::string toString(DiskTarget target);
 // Parses "auto", "circle", "keep-boundary"; InputError naming the value otherwise.
@@ -94,9 +88,7 @@ struct UniformizedMetric {
   std::vector<Eigen::Vector3d> t0Reference;  // per T0 vertex: its point on the chart's reference surface
   std::vector<Eigen::Vector2d> t0Chart;      // per T0 vertex: chart coordinates
   intrinsic::Uniformization uniformization;
-  // The disk target used (Auto resolved; Circle also stands for charts without boundary, where it plays no role).
-  // KeepBoundary refines with BoundarySplit::Geodesic.
-  DiskTarget diskTarget = DiskTarget::Circle;
+  DiskTarget diskTarget = DiskTarget::Circle;  // Auto resolved (Circle also for charts without boundary)
   double discretizeSeconds = 0, uniformizeSeconds = 0;
 };
 UniformizedMetric uniformizeMetric(const intrinsic::SmoothMetric& metric, const RemeshOptions& options);
@@ -105,9 +97,9 @@ UniformizedMetric uniformizeMetric(const intrinsic::SmoothMetric& metric, const 
 RemeshResult remeshUniformized(const UniformizedMetric& prepared, const intrinsic::SmoothMetric& metric,
                                const RemeshOptions& options);
 
-// The output for files (remesh_output.cpp): faces, edges with their lengths, positions where the metric has an embedding, and per-vertex
-// properties u, v (chart), lambda, curvature (angle deficit / boundary turning), smooth_curvature (K of the metric at
-// the vertex), input_face and input_b0..2 (the vertex's place on T0); comments name the metric and ε.
+// The output for files (remesh_output.cpp): faces, edges with their lengths, positions where the metric has an
+// embedding, and per-vertex properties u, v (chart), lambda, curvature (angle deficit / boundary turning),
+// smooth_curvature (K of the metric at the vertex), input_face and input_b0..2 (the vertex's place on T0).
 intrinsic::MeshData toMeshData(const RemeshResult& result, const intrinsic::SmoothMetric& metric, double epsilon);
 // The same for ParaView: points are the embedding where known, else the chart's reference surface (the unit sphere
 // for sphere charts); the per-vertex properties become point fields.
