@@ -262,9 +262,10 @@ TEST_CASE("uniformized cow, spherical edges down to 1e-13: refinement terminates
 // the same end point, and a direction just outside a boundary vertex's fan followed along the nearer boundary edge.
 TEST_CASE("trace options: edge crossings lie on the segment in order, and outward directions follow the boundary") {
   const DiskSurface s = disk(4);
-  const Signposts sp = initialSignposts(s.tri);
-  const BackgroundModel model(s.tri.background);
-  const auto& m = s.tri.mesh;
+  const InputSurface surface(s.tri);  // the disk's own signposts and model
+  const Signposts& sp = surface.signposts();
+  const BackgroundModel& model = surface.model();
+  const intrinsic::HalfedgeMesh& m = s.tri.mesh;
   int interior = 0;
   while (m.isBoundaryVertex(interior)) ++interior;
   std::vector<EdgeCrossing> crossings;
