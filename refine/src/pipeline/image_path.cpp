@@ -194,8 +194,7 @@ bool Development::moveTo(int target, const Eigen::Vector3d& b, int corner) {
   int best = -1;
   for (int k = 0; k < 3; ++k) {
     const int g = t_.mesh.twin(3 * face_ + k);
-    if (g != kInvalid && HalfedgeMesh::face(g) == target && (best < 0 || b[(k + 2) % 3] < b[(best + 2) % 3]))
-      best = k;
+    if (g != kInvalid && HalfedgeMesh::face(g) == target && (best < 0 || b[(k + 2) % 3] < b[(best + 2) % 3])) best = k;
   }
   if (best >= 0) return across(best);
   if (corner < 0)

@@ -47,8 +47,7 @@ struct Resolved {
 // Resolves the image of a piece with ends A and B on T0 when they lie in one input face or in two adjacent ones (the
 // crossing found exactly in the light-cone model), or, when `tiny`, in two faces sharing a corner; false when it must
 // be bisected.
-bool resolvePiece(const intrinsic::IntrinsicTriangulation& t0, const Point& A, const Point& B, bool tiny,
-                  Resolved& r);
+bool resolvePiece(const intrinsic::IntrinsicTriangulation& t0, const Point& A, const Point& B, bool tiny, Resolved& r);
 
 // The faces an image path crosses, unfolded one onto the next across the edges it crosses, in the plane.
 class Development {

@@ -6,8 +6,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "conformesh/intrinsic/flow/boundary_flattening.h"
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/flow/boundary_flattening.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "conformesh/intrinsic/metric/reference_surface.h"
 
@@ -323,8 +323,7 @@ class UniformizedRemesh {
     double t0Sign = 0;
     for (int f = 0; f < t0_.mesh.nFaces(); ++f)
       t0Sign += referenceOrientation(domain_, t0Reference[t0_.mesh.faceVertex(f, 0)],
-                                     t0Reference[t0_.mesh.faceVertex(f, 1)],
-                                     t0Reference[t0_.mesh.faceVertex(f, 2)]) > 0
+                                     t0Reference[t0_.mesh.faceVertex(f, 1)], t0Reference[t0_.mesh.faceVertex(f, 2)]) > 0
                     ? 1
                     : -1;
     for (int f = 0; f < m1.nFaces(); ++f) {

@@ -56,8 +56,8 @@ void ImagePathPullBack::mapVertices(MeshRemeshResult& out) {
   for (int v = 0; v < n1; ++v) {
     vertexImage_[v] = v < n0_ ? vertexPoint(m0, v) : toPoint(onInput[v - n0_]);
     const Point& p = vertexImage_[v];
-    const Eigen::Vector3d b = p.bary[0] * parentCorner[p.face][0] + p.bary[1] * parentCorner[p.face][1] +
-                              p.bary[2] * parentCorner[p.face][2];
+    const Eigen::Vector3d b =
+        p.bary[0] * parentCorner[p.face][0] + p.bary[1] * parentCorner[p.face][1] + p.bary[2] * parentCorner[p.face][2];
     out.location[v] = {input_.parentFace[p.face], {b[0], b[1], b[2]}};
   }
 }

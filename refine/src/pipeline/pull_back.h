@@ -65,7 +65,7 @@ class ImagePathPullBack {
   const intrinsic::Uniformization& u_;
   const RefineResult& refined_;
   const int extraBisections_;
-  const int n0_;  // T0's vertices: output vertices 0 .. n0−1
+  const int n0_;                    // T0's vertices: output vertices 0 .. n0−1
   const Signposts inputSignposts_;  // initialSignposts(T0*): the frame of T1*'s signposts at input vertices
   const BackgroundModel model_;
   std::vector<Point> vertexImage_;

@@ -64,8 +64,8 @@ std::array<Vec3, 3> layoutFace(const IntrinsicTriangulation& tri, const Backgrou
 
 namespace {
 
-// The crossing of s → t with edge (P[k], P[k+1]): in all three models geodesics are planes through 0, so the crossing is
-// the intersection line of the two planes; projective barycentric coordinates ignore its scale and sign.
+// The crossing of s → t with edge (P[k], P[k+1]): in all three models geodesics are planes through 0, so the crossing
+// is the intersection line of the two planes; projective barycentric coordinates ignore its scale and sign.
 EdgeCrossing crossingOf(const BackgroundModel& model, const std::array<Vec3, 3>& P, const Vec3& s, const Vec3& t,
                         int face, int k) {
   const Vec3 X = (s.cross(t)).cross(P[k].cross(P[(k + 1) % 3]));
@@ -150,8 +150,8 @@ TraceResult walk(const IntrinsicTriangulation& tri, const BackgroundModel& model
 }
 
 // The walk from the vertex at the tail of w.halfedge, at angle w.offset from it inside its corner.
-TraceResult walkFromWedge(const IntrinsicTriangulation& tri, const BackgroundModel& model, const Wedge& w, double length,
-                          const TraceOptions& options) {
+TraceResult walkFromWedge(const IntrinsicTriangulation& tri, const BackgroundModel& model, const Wedge& w,
+                          double length, const TraceOptions& options) {
   const int h = w.halfedge, k = h % 3;
   const std::array<Vec3, 3> P = layoutAtHalfedge(tri, model, h);
   const Vec3 t = model.polar(length, w.offset);

@@ -14,11 +14,11 @@
 #include <Eigen/Core>
 
 #include "conformesh/intrinsic/flow/flow_correspondence.h"
+#include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
 #include "conformesh/intrinsic/mesh/mesh_data.h"
-#include "conformesh/intrinsic/flow/uniformization.h"
-#include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
 

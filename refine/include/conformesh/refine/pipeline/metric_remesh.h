@@ -12,11 +12,11 @@
 
 #include <Eigen/Core>
 
+#include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
-#include "conformesh/intrinsic/flow/uniformization.h"
-#include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
 
