@@ -14,6 +14,7 @@
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
+#include "conformesh/refine/trace/input_location.h"
 #include "report_json.h"
 
 namespace conformesh::apps {
@@ -88,15 +89,8 @@ void run(const RefineArgs& args) {
   // Euclidean input with positions: a location is a point of the input's flat triangle, so its position is the
   // barycentric combination of the corners (extended linearly for boundary-circle points beyond a chord).
   if (tri.background == intrinsic::Background::Euclidean && !data.positions.empty() &&
-      conv.unreferencedVerticesRemoved == 0) {
-    out.positions.resize(nV);
-    for (int v = 0; v < nV; ++v) {
-      Eigen::Vector3d p = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k)
-        p += r.locations[v].bary[k] * data.positions[tri.mesh.faceVertex(r.locations[v].face, k)];
-      out.positions[v] = p;
-    }
-  }
+      conv.unreferencedVerticesRemoved == 0)
+    out.positions = refine::interpolatePositions(tri.mesh, data.positions, r.locations);
   intrinsic::WriteOptions wo;
   if (args.ascii) wo.plyEncoding = intrinsic::PlyEncoding::Ascii;
   progress("writing " + args.output);

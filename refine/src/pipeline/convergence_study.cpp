@@ -17,11 +17,16 @@ std::vector<int> paperTable2Vertices() {
   return {1021, 2045, 4093, 6141, 8189, 10237, 12285, 14333, 16381, 18429, 21876};
 }
 
+std::string ConvergenceOptions::validate() const {
+  if (targetVertices.size() < 2) return "convergence: give at least two target vertex counts to fit an order";
+  for (int n : targetVertices)
+    if (n < 10) return "convergence: target vertex count " + std::to_string(n) + " is too small";
+  return "";
+}
+
 ConvergenceStudy runConvergenceStudy(const SmoothMetric& metric, const ConvergenceOptions& options) {
-  if (options.targetVertices.size() < 2)
-    throw InputError("convergence: give at least two target vertex counts to fit an order");
-  for (int n : options.targetVertices)
-    if (n < 10) throw InputError("convergence: target vertex count " + std::to_string(n) + " is too small");
+  const std::string problem = options.validate();
+  if (!problem.empty()) throw InputError(problem);
   auto say = [&](const std::string& s) {
     if (options.progress) options.progress(s);
   };

@@ -1,14 +1,13 @@
-// remesh.cpp — discretize → uniformize → refine → pull back, for a surface given by a smooth metric (remesh.h).
+// metric_remesh.cpp — discretize → uniformize → refine → pull back, for a surface given by a smooth metric
+// (metric_remesh.h); stages 3 and 4 are the class UniformizedRemesh, one method per step.
 #include "conformesh/refine/pipeline/metric_remesh.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 
-#include "conformesh/intrinsic/flow/boundary_flattening.h"
-#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/flow/boundary_flattening.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "conformesh/intrinsic/metric/reference_surface.h"
 
@@ -132,213 +131,234 @@ UniformizedMetric uniformizeMetric(const SmoothMetric& metric, const RemeshOptio
   return out;
 }
 
+std::string RemeshOptions::validate() const {
+  if (!(epsilon > 0) || !std::isfinite(epsilon))
+    return "remesh: --eps must be a positive size in the metric's units, found " + std::to_string(epsilon);
+  return "";
+}
+
+namespace {
+
+// Stages 3 and 4 on a prepared uniformization: refine T0* graded by e^(−λ), then pull back — T1* vertices → T0
+// points → chart — and measure each output edge in the original metric.
+class UniformizedRemesh {
+ public:
+  UniformizedRemesh(const UniformizedMetric& prepared, const SmoothMetric& metric, const RemeshOptions& options)
+      : prepared_(prepared),
+        metric_(metric),
+        options_(options),
+        domain_(metric.domain()),
+        t0_(prepared.t0),
+        n0_(prepared.t0.mesh.nVertices()),
+        keepBoundary_(prepared.diskTarget == DiskTarget::KeepBoundary) {}
+
+  RemeshResult run() {
+    out_.t0Vertices = n0_;
+    out_.t0Faces = t0_.mesh.nFaces();
+    out_.uniformization = prepared_.uniformization.report;
+    out_.diskTarget = prepared_.diskTarget;
+    out_.seconds.discretize = prepared_.discretizeSeconds;
+    out_.seconds.uniformize = prepared_.uniformizeSeconds;
+    const RefineResult refined = refine();
+    const auto t = std::chrono::steady_clock::now();
+    say("pulling back " + std::to_string(refined.triangulation.mesh.nVertices()) + " vertices to the surface");
+    placeVertices(refined);
+    placeOnChart();
+    measureLengths(refined.triangulation.mesh);
+    countInvertedTriangles();
+    out_.quality = measureQuality(out_.mesh);
+    out_.seconds.pullBack = secondsSince(t);
+    return std::move(out_);
+  }
+
+ private:
+  void say(const std::string& s) const {
+    if (options_.progress) options_.progress(s);
+  }
+
+  // === 3. refine T0*, graded by e^(−λ)
+  RefineResult refine() {
+    const auto t = std::chrono::steady_clock::now();
+    RefineOptions ref = options_.refinement;
+    ref.epsilon = options_.epsilon;
+    ref.ratioBound = options_.ratioBound;
+    if (!options_.uniform) ref.lambda = prepared_.uniformization.lambda;
+    // The kept-boundary domain is the polygon of T0's boundary chords: split its sides on the chords.
+    if (keepBoundary_) ref.boundarySplit = BoundarySplit::Geodesic;
+    if (!ref.progress && options_.progress)
+      ref.progress = [this](const RefineProgress& p) {
+        say("refining: " + std::to_string(p.vertices) + " vertices, " + std::to_string(p.queuedTriangles) +
+            " bad triangles queued");
+      };
+    say("refining the uniformized surface, eps = " + std::to_string(options_.epsilon));
+    RefineResult refined = refineDelaunay(prepared_.uniformization.uniform, ref);
+    out_.refinement = refined.statistics;
+    out_.uniformQuality = measureQuality(refined.triangulation);
+    out_.seconds.refine = secondsSince(t);
+    return refined;
+  }
+
+  // === 4. pull back: each T1* vertex to its T0 point and reference point. Interior points go through the
+  // correspondence together; boundary-circle points are placed on the chart boundary; T0's vertices are themselves.
+  void placeVertices(const RefineResult& refined) {
+    const int n1 = refined.triangulation.mesh.nVertices();
+    out_.reference.resize(n1);
+    out_.chart.resize(n1);
+    out_.t0Face.assign(n1, kInvalid);
+    out_.t0Bary.assign(n1, Eigen::Vector3d::Zero());
+    out_.lambda = refined.lambda;
+    std::vector<FacePoint> onUniform;
+    std::vector<int> interiorVertex;
+    for (int v = n0_; v < n1; ++v) {
+      const InputLocation& loc = refined.locations[v];
+      const int negative = capCorner(loc.bary);
+      if (negative >= 0) {
+        placeOnBoundary(v, loc, negative);
+        continue;
+      }
+      FacePoint p;
+      p.face = loc.face;
+      const Eigen::Vector3d c = loc.bary.cwiseMax(0.0);
+      const double s = c.sum();
+      p.bary = {c[0] / s, c[1] / s, c[2] / s};
+      onUniform.push_back(p);
+      interiorVertex.push_back(v);
+    }
+    const std::vector<FacePoint> onInput =
+        prepared_.uniformization.correspondence.mapToInput(prepared_.uniformization.uniform.mesh, onUniform);
+    const std::vector<Eigen::Vector3d>& t0Reference = prepared_.t0Reference;
+    for (size_t k = 0; k < interiorVertex.size(); ++k) {
+      const int v = interiorVertex[k];
+      const FacePoint& p = onInput[k];
+      const Eigen::Vector3d b(p.bary[0], p.bary[1], p.bary[2]);
+      out_.reference[v] = interpolateOnReference(domain_, t0Reference[t0_.mesh.faceVertex(p.face, 0)],
+                                                 t0Reference[t0_.mesh.faceVertex(p.face, 1)],
+                                                 t0Reference[t0_.mesh.faceVertex(p.face, 2)], b);
+      out_.t0Face[v] = p.face;
+      out_.t0Bary[v] = b;
+    }
+    for (int v = 0; v < n0_; ++v) {
+      out_.reference[v] = t0Reference[v];
+      const int h = t0_.mesh.vertexHalfedge(v);
+      out_.t0Face[v] = HalfedgeMesh::face(h);
+      out_.t0Bary[v][h % 3] = 1.0;
+    }
+  }
+
+  // The corner whose coordinate is negative (the most negative) for a point beyond a boundary chord, else −1. On the
+  // kept-boundary polygon a boundary vertex lies ON a T0* chord; its coordinate 0 may come out as round-off of either
+  // sign (1e-9 is the correspondence's own tolerance, mapToInput). Such a point goes through the correspondence, which
+  // keeps a boundary chord on the same T0 chord (u = 0 at both ends: the map is affine there).
+  int capCorner(const Eigen::Vector3d& b) const {
+    int negative = -1;
+    for (int k = 0; k < 3; ++k)
+      if (b[k] < 0 && (negative < 0 || b[k] < b[negative])) negative = k;
+    if (keepBoundary_ && negative >= 0 && b[negative] > -1e-9) negative = -1;
+    return negative;
+  }
+
+  // A vertex beyond the chord opposite corner `negative` of its T0* face: the chord's ends are T0* vertices, which are
+  // T0 vertices, and its image is on the chart's boundary between theirs (boundaryImage).
+  void placeOnBoundary(int v, const InputLocation& loc, int negative) {
+    const HalfedgeMesh& mStar = prepared_.uniformization.uniform.mesh;
+    const Eigen::Vector3d& b = loc.bary;
+    const int i = mStar.faceVertex(loc.face, (negative + 1) % 3), j = mStar.faceVertex(loc.face, (negative + 2) % 3);
+    const double bi = b[(negative + 1) % 3], bj = b[(negative + 2) % 3];
+    const double tau = bj / (bi + bj);
+    out_.reference[v] = boundaryImage(domain_, prepared_.t0Reference[i], prepared_.t0Reference[j], tau);
+    // Its T0 location: the T0 boundary face of chord (i, j) is not known without a search, so record the nearest chord
+    // end's corner; the reference point above is the vertex's place.
+    const int h = t0_.mesh.vertexHalfedge(tau < 0.5 ? i : j);
+    out_.t0Face[v] = HalfedgeMesh::face(h);
+    out_.t0Bary[v][h % 3] = 1.0;
+  }
+
+  // Chart coordinates per vertex, and the embedding where the metric has one. Interpolation across a periodic seam
+  // leaves a point's unwrapped coordinates outside the chart; every reference point of a non-polar chart is brought
+  // back into it, so that edges are measured between canonical representatives.
+  void placeOnChart() {
+    const int n1 = static_cast<int>(out_.reference.size());
+    const bool polar = domain_.shape() == ChartShape::Sphere || domain_.shape() == ChartShape::Disk;
+    for (int v = 0; v < n1; ++v) {
+      out_.chart[v] = v < n0_ ? prepared_.t0Chart[v] : chartCoordinates(domain_, out_.reference[v]);
+      if (!polar) out_.reference[v] = {out_.chart[v].x(), out_.chart[v].y(), 0.0};
+    }
+    if (metric_.hasEmbedding()) {
+      out_.positions.resize(n1);
+      for (int v = 0; v < n1; ++v) out_.positions[v] = metric_.position(out_.chart[v].x(), out_.chart[v].y());
+    }
+  }
+
+  // Output lengths: the metric length of each edge's curve (the reference-straight segment between its ends), by
+  // 6-node Gauss–Legendre pieces halved until two sums agree to 1e-12 relative; the edges are shared among threads.
+  void measureLengths(const HalfedgeMesh& m1) {
+    DiscretizationOptions disc = options_.discretization;
+    disc.gaussPoints = 6;
+    disc.lengthTolerance = 1e-12;
+    out_.mesh.mesh = m1;
+    out_.mesh.background = Background::Euclidean;
+    out_.mesh.edgeLengths.resize(m1.nEdges());
+#pragma omp parallel for schedule(dynamic, 256)
+    for (int e = 0; e < m1.nEdges(); ++e) {
+      const int h = m1.edgeHalfedge(e);
+      const Eigen::Vector3d& xa = out_.reference[m1.tail(h)];
+      out_.mesh.edgeLengths[e] =
+          chartCurveLength(metric_, xa, unwrapNear(domain_, xa, out_.reference[m1.tip(h)]), disc);
+    }
+    // Lengths of chart-straight curves can fail the triangle inequality where T0 is too coarse for the metric: a T1*
+    // triangle whose three vertices pull back onto one chart-straight line (e.g. three T0 grid vertices joined by a
+    // flipped edge) is degenerate. That is a failure of the approximation, not of the input.
+    try {
+      validateLengths(out_.mesh, "remeshed surface");
+    } catch (const InputError& e) {
+      throw ConvergenceError(std::string(e.what()) + " (the pull-back through T0 of " + std::to_string(n0_) +
+                             " vertices is too coarse for this metric here: raise --t0-resolution or lower --eps)");
+    }
+  }
+
+  // The map back is a homeomorphism only if no triangle's image is inverted: compare with T0's orientation.
+  void countInvertedTriangles() {
+    const std::vector<Eigen::Vector3d>& t0Reference = prepared_.t0Reference;
+    const HalfedgeMesh& m1 = out_.mesh.mesh;
+    double t0Sign = 0;
+    for (int f = 0; f < t0_.mesh.nFaces(); ++f)
+      t0Sign += referenceOrientation(domain_, t0Reference[t0_.mesh.faceVertex(f, 0)],
+                                     t0Reference[t0_.mesh.faceVertex(f, 1)], t0Reference[t0_.mesh.faceVertex(f, 2)]) > 0
+                    ? 1
+                    : -1;
+    for (int f = 0; f < m1.nFaces(); ++f) {
+      const double o = referenceOrientation(domain_, out_.reference[m1.faceVertex(f, 0)],
+                                            out_.reference[m1.faceVertex(f, 1)], out_.reference[m1.faceVertex(f, 2)]);
+      if (!(o * t0Sign > 0)) ++out_.invertedTriangles;
+    }
+  }
+
+  const UniformizedMetric& prepared_;
+  const SmoothMetric& metric_;
+  const RemeshOptions& options_;
+  const ChartDomain domain_;
+  const IntrinsicTriangulation& t0_;
+  const int n0_;
+  const bool keepBoundary_;
+  RemeshResult out_;
+};
+
+void throwIfInvalid(const RemeshOptions& options) {
+  const std::string problem = options.validate();
+  if (!problem.empty()) throw InputError(problem);
+}
+
+}  // namespace
+
 RemeshResult remeshMetric(const SmoothMetric& metric, const RemeshOptions& options) {
-  if (!(options.epsilon > 0) || !std::isfinite(options.epsilon))
-    throw InputError("remesh: --eps must be a positive size in the metric's units, found " +
-                     std::to_string(options.epsilon));
+  throwIfInvalid(options);
   return remeshUniformized(uniformizeMetric(metric, options), metric, options);
 }
 
 RemeshResult remeshUniformized(const UniformizedMetric& prepared, const SmoothMetric& metric,
                                const RemeshOptions& options) {
-  if (!(options.epsilon > 0) || !std::isfinite(options.epsilon))
-    throw InputError("remesh: --eps must be a positive size in the metric's units, found " +
-                     std::to_string(options.epsilon));
-  auto say = [&](const std::string& s) {
-    if (options.progress) options.progress(s);
-  };
-  const ChartDomain domain = metric.domain();
-  const IntrinsicTriangulation& t0 = prepared.t0;
-  const std::vector<Eigen::Vector3d>& t0Reference = prepared.t0Reference;
-  const std::vector<Eigen::Vector2d>& t0Chart = prepared.t0Chart;
-  const Uniformization& u = prepared.uniformization;
-  const int n0 = t0.mesh.nVertices();
-  DiscretizationOptions disc = options.discretization;
-  RemeshResult out;
-  out.t0Vertices = n0;
-  out.t0Faces = t0.mesh.nFaces();
-  out.uniformization = u.report;
-  out.diskTarget = prepared.diskTarget;
-  const bool keepBoundary = prepared.diskTarget == DiskTarget::KeepBoundary;
-  out.seconds.discretize = prepared.discretizeSeconds;
-  out.seconds.uniformize = prepared.uniformizeSeconds;
-  auto t = std::chrono::steady_clock::now();
-
-  // === 3. refine T0*, graded by e^(−λ)
-  RefineOptions ref = options.refinement;
-  ref.epsilon = options.epsilon;
-  ref.ratioBound = options.ratioBound;
-  if (!options.uniform) ref.lambda = u.lambda;
-  // The kept-boundary domain is the polygon of T0's boundary chords: split its sides on the chords.
-  if (keepBoundary) ref.boundarySplit = BoundarySplit::Geodesic;
-  if (!ref.progress && options.progress)
-    ref.progress = [&](const RefineProgress& p) {
-      say("refining: " + std::to_string(p.vertices) + " vertices, " + std::to_string(p.queuedTriangles) +
-          " bad triangles queued");
-    };
-  say("refining the uniformized surface, eps = " + std::to_string(options.epsilon));
-  RefineResult refined = refineDelaunay(u.uniform, ref);
-  out.refinement = refined.statistics;
-  out.uniformQuality = measureQuality(refined.triangulation);
-  out.seconds.refine = secondsSince(t);
-
-  // === 4. pull back: T1* vertices → T0 points → chart; lengths from the original metric
-  t = std::chrono::steady_clock::now();
-  say("pulling back " + std::to_string(refined.triangulation.mesh.nVertices()) + " vertices to the surface");
-  const HalfedgeMesh& m1 = refined.triangulation.mesh;
-  const HalfedgeMesh& mStar = u.uniform.mesh;
-  const int n1 = m1.nVertices();
-  out.reference.resize(n1);
-  out.chart.resize(n1);
-  out.t0Face.assign(n1, kInvalid);
-  out.t0Bary.assign(n1, Eigen::Vector3d::Zero());
-  out.lambda = refined.lambda;
-
-  // Interior points go through the correspondence together; boundary-circle points are placed on the chart boundary.
-  std::vector<FacePoint> onUniform;
-  std::vector<int> interiorVertex;
-  for (int v = n0; v < n1; ++v) {
-    const InputLocation& loc = refined.locations[v];
-    const Eigen::Vector3d& b = loc.bary;
-    int negative = -1;  // the most negative coordinate, if any
-    for (int k = 0; k < 3; ++k)
-      if (b[k] < 0 && (negative < 0 || b[k] < b[negative])) negative = k;
-    // On the kept-boundary polygon a boundary vertex lies ON a T0* chord; its coordinate 0 may come out as round-off
-    // of either sign (1e-9 is the correspondence's own tolerance, mapToInput). Such a point goes through the
-    // correspondence, which keeps a boundary chord on the same T0 chord (u = 0 at both ends: the map is affine there).
-    if (keepBoundary && negative >= 0 && b[negative] > -1e-9) negative = -1;
-    if (negative < 0) {
-      FacePoint p;
-      p.face = loc.face;
-      const Eigen::Vector3d c = b.cwiseMax(0.0);
-      const double s = c.sum();
-      p.bary = {c[0] / s, c[1] / s, c[2] / s};
-      onUniform.push_back(p);
-      interiorVertex.push_back(v);
-      continue;
-    }
-    // The chord opposite corner `negative`: its ends are T0* vertices, which are T0 vertices.
-    const int i = mStar.faceVertex(loc.face, (negative + 1) % 3), j = mStar.faceVertex(loc.face, (negative + 2) % 3);
-    const double bi = b[(negative + 1) % 3], bj = b[(negative + 2) % 3];
-    const double tau = bj / (bi + bj);
-    out.reference[v] = boundaryImage(domain, t0Reference[i], t0Reference[j], tau);
-    // Its T0 location: the T0 boundary face of chord (i, j) is not known without a search, so record the nearest chord
-    // end's corner; the reference point above is the vertex's place.
-    const int h = t0.mesh.vertexHalfedge(tau < 0.5 ? i : j);
-    out.t0Face[v] = HalfedgeMesh::face(h);
-    out.t0Bary[v][h % 3] = 1.0;
-  }
-  const std::vector<FacePoint> onInput = u.correspondence.mapToInput(mStar, onUniform);
-  for (size_t k = 0; k < interiorVertex.size(); ++k) {
-    const int v = interiorVertex[k];
-    const FacePoint& p = onInput[k];
-    const Eigen::Vector3d b(p.bary[0], p.bary[1], p.bary[2]);
-    out.reference[v] = interpolateOnReference(domain, t0Reference[t0.mesh.faceVertex(p.face, 0)],
-                                              t0Reference[t0.mesh.faceVertex(p.face, 1)],
-                                              t0Reference[t0.mesh.faceVertex(p.face, 2)], b);
-    out.t0Face[v] = p.face;
-    out.t0Bary[v] = b;
-  }
-  for (int v = 0; v < n0; ++v) {
-    out.reference[v] = t0Reference[v];
-    const int h = t0.mesh.vertexHalfedge(v);
-    out.t0Face[v] = HalfedgeMesh::face(h);
-    out.t0Bary[v][h % 3] = 1.0;
-  }
-  // Interpolation across a periodic seam leaves a point's unwrapped coordinates outside the chart; bring every
-  // reference point of a non-polar chart back into it, so that edges are measured between canonical representatives.
-  const bool polar = domain.shape() == ChartShape::Sphere || domain.shape() == ChartShape::Disk;
-  for (int v = 0; v < n1; ++v) {
-    out.chart[v] = v < n0 ? t0Chart[v] : chartCoordinates(domain, out.reference[v]);
-    if (!polar) out.reference[v] = {out.chart[v].x(), out.chart[v].y(), 0.0};
-  }
-  if (metric.hasEmbedding()) {
-    out.positions.resize(n1);
-    for (int v = 0; v < n1; ++v) out.positions[v] = metric.position(out.chart[v].x(), out.chart[v].y());
-  }
-
-  // Output lengths: the metric length of each edge's curve (the reference-straight segment between its ends). Output
-  // edges are short, so 6 Gauss–Legendre nodes per piece (exact for speeds of degree 11) with pieces halved until two
-  // sums agree to 1e-12 relative cost a few dozen metric evaluations per edge, ~100× below the errors measured. The
-  // edges are independent: shared among threads.
-  disc.gaussPoints = 6;
-  disc.lengthTolerance = 1e-12;
-  out.mesh.mesh = m1;
-  out.mesh.background = Background::Euclidean;
-  out.mesh.edgeLengths.resize(m1.nEdges());
-#pragma omp parallel for schedule(dynamic, 256)
-  for (int e = 0; e < m1.nEdges(); ++e) {
-    const int h = m1.edgeHalfedge(e);
-    const Eigen::Vector3d& xa = out.reference[m1.tail(h)];
-    out.mesh.edgeLengths[e] = chartCurveLength(metric, xa, unwrapNear(domain, xa, out.reference[m1.tip(h)]), disc);
-  }
-  // Lengths of chart-straight curves can fail the triangle inequality where T0 is too coarse for the metric: a T1*
-  // triangle whose three vertices pull back onto one chart-straight line (e.g. three T0 grid vertices joined by a
-  // flipped edge) is degenerate. That is a failure of the approximation, not of the input.
-  try {
-    validateLengths(out.mesh, "remeshed surface");
-  } catch (const InputError& e) {
-    throw ConvergenceError(std::string(e.what()) + " (the pull-back through T0 of " + std::to_string(n0) +
-                           " vertices is too coarse for this metric here: raise --t0-resolution or lower --eps)");
-  }
-
-  // The map back is a homeomorphism only if no triangle's image is inverted: compare with T0's orientation.
-  double t0Sign = 0;
-  for (int f = 0; f < t0.mesh.nFaces(); ++f)
-    t0Sign += referenceOrientation(domain, t0Reference[t0.mesh.faceVertex(f, 0)], t0Reference[t0.mesh.faceVertex(f, 1)],
-                                   t0Reference[t0.mesh.faceVertex(f, 2)]) > 0
-                  ? 1
-                  : -1;
-  for (int f = 0; f < m1.nFaces(); ++f) {
-    const double o = referenceOrientation(domain, out.reference[m1.faceVertex(f, 0)],
-                                          out.reference[m1.faceVertex(f, 1)], out.reference[m1.faceVertex(f, 2)]);
-    if (!(o * t0Sign > 0)) ++out.invertedTriangles;
-  }
-  out.quality = measureQuality(out.mesh);
-  out.seconds.pullBack = secondsSince(t);
-  return out;
-}
-
-MeshData toMeshData(const RemeshResult& r, const SmoothMetric& metric, double epsilon) {
-  MeshData d = fromTriangulation(r.mesh);
-  d.source = metric.description();
-  if (!r.positions.empty()) d.positions = r.positions;
-  const int n = r.mesh.mesh.nVertices();
-  auto& p = d.vertexProperties;
-  p["u"].resize(n);
-  p["v"].resize(n);
-  p["smooth_curvature"].resize(n);
-  p["input_face"].resize(n);
-  for (const char* b : {"input_b0", "input_b1", "input_b2"}) p[b].resize(n);
-  for (int v = 0; v < n; ++v) {
-    p["u"][v] = r.chart[v].x();
-    p["v"][v] = r.chart[v].y();
-    p["smooth_curvature"][v] = metric.gaussianCurvature(r.chart[v].x(), r.chart[v].y());
-    p["input_face"][v] = r.t0Face[v];
-    p["input_b0"][v] = r.t0Bary[v][0];
-    p["input_b1"][v] = r.t0Bary[v][1];
-    p["input_b2"][v] = r.t0Bary[v][2];
-  }
-  p["lambda"] = r.lambda;
-  p["curvature"] = vertexCurvatures(r.mesh);
-  char eps[64];
-  std::snprintf(eps, sizeof eps, "%.17g", epsilon);
-  d.comments.push_back("conformesh remesh: " + metric.description());
-  d.comments.push_back("eps " + std::string(eps) + " (circumradius bound in the original metric)");
-  d.comments.push_back("lengths: metric lengths of the edges' curves in the original metric");
-  d.comments.push_back("input: T0 of " + std::to_string(r.t0Vertices) + " vertices, " + std::to_string(r.t0Faces) +
-                       " faces (input_face, input_b0..2)");
-  return d;
-}
-
-VtkMesh toVtkMesh(const MeshData& data, const RemeshResult& r) {
-  VtkMesh vtk;
-  vtk.title = "conformesh remesh: " + data.source;
-  vtk.points = r.positions.empty() ? r.reference : r.positions;
-  vtk.triangles = data.faces;
-  for (const auto& [name, values] : data.vertexProperties)
-    if (name.rfind("input_", 0) != 0) vtk.pointFields[name] = values;
-  return vtk;
+  throwIfInvalid(options);
+  return UniformizedRemesh(prepared, metric, options).run();
 }
 
 }  // namespace conformesh::refine

@@ -1,10 +1,14 @@
-// geodesic_trace.cpp — straight-segment walks through unfolded triangles with exact orientation decisions.
+// geodesic_trace.cpp — straight-segment walks through unfolded triangles with exact orientation decisions
+// (geodesic_trace.h); one walk serves the refinement, input_location.h and the mesh pull-back.
 #include "conformesh/refine/trace/geodesic_trace.h"
 
 #include "trace/corner_angle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+
+#include <Eigen/Geometry>
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/refine/trace/robust_predicates.h"
@@ -60,11 +64,22 @@ std::array<Vec3, 3> layoutFace(const IntrinsicTriangulation& tri, const Backgrou
 
 namespace {
 
+// The crossing of s → t with edge (P[k], P[k+1]): in all three models geodesics are planes through 0, so the crossing
+// is the intersection line of the two planes; projective barycentric coordinates ignore its scale and sign.
+EdgeCrossing crossingOf(const BackgroundModel& model, const std::array<Vec3, 3>& P, const Vec3& s, const Vec3& t,
+                        int face, int k) {
+  const Vec3 X = (s.cross(t)).cross(P[k].cross(P[(k + 1) % 3]));
+  Eigen::Vector3d beta = model.barycentric(P[0], P[1], P[2], X);
+  beta[(k + 2) % 3] = 0;
+  for (int i = 0; i < 3; ++i) beta[i] = std::max(beta[i], 0.0);
+  return {3 * face + k, beta / beta.sum()};
+}
+
 // The walk. `exitMask` bit k allows leaving through the edge of halfedge 3f+k of the first face: from a vertex only
 // the opposite edge is a way out; from a general point all three are (the first face is the one containing the start,
 // or the boundary face whose cap contains it, for which the boundary edge is an entry and fails the exit test).
 TraceResult walk(const IntrinsicTriangulation& tri, const BackgroundModel& model, int face, std::array<Vec3, 3> P,
-                 const Vec3& s, const Vec3& t, unsigned exitMask) {
+                 const Vec3& s, const Vec3& t, unsigned exitMask, const TraceOptions& options) {
   const HalfedgeMesh& m = tri.mesh;
   // NaN coordinates would make every orientation test false (and the exact fallback meaningless): stop with the face.
   if (!s.allFinite() || !t.allFinite() || !P[0].allFinite() || !P[1].allFinite() || !P[2].allFinite())
@@ -120,26 +135,42 @@ TraceResult walk(const IntrinsicTriangulation& tri, const BackgroundModel& model
       throw ConvergenceError("geodesic trace did not reach its end after " + std::to_string(r.steps) +
                              " triangles (the cap 20·faces + 1000 = " + std::to_string(maxSteps) + "; last face " +
                              std::to_string(face) + "): degenerate layout");
+    if (options.crossings) options.crossings->push_back(crossingOf(model, P, s, t, face, exitK));
     // g runs Q = P[exitK+1] -> Pp = P[exitK] in the next face; its third vertex is unfolded on the far side.
     const Vec3 Pp = P[exitK], Q = P[(exitK + 1) % 3];
     const int kg = g % 3;
     face = HalfedgeMesh::face(g);
     P[kg] = Q;
     P[(kg + 1) % 3] = Pp;
-    P[(kg + 2) % 3] = unfoldThirdVertex(tri, model, g, Q, Pp);
+    P[(kg + 2) % 3] = options.unfolding == Unfolding::LawOfCosines
+                          ? unfoldThirdVertex(tri, model, g, Q, Pp)
+                          : model.thirdVertex(Q, Pp, fastCornerAngle(tri, g), tri.length(HalfedgeMesh::prev(g)));
     exitMask = 7u & ~(1u << kg);
   }
+}
+
+// The walk from the vertex at the tail of w.halfedge, at angle w.offset from it inside its corner.
+TraceResult walkFromWedge(const IntrinsicTriangulation& tri, const BackgroundModel& model, const Wedge& w,
+                          double length, const TraceOptions& options) {
+  const int h = w.halfedge, k = h % 3;
+  const std::array<Vec3, 3> P = layoutAtHalfedge(tri, model, h);
+  const Vec3 t = model.polar(length, w.offset);
+  TraceResult r =
+      walk(tri, model, HalfedgeMesh::face(h), P, BackgroundModel::origin(), t, 1u << ((k + 1) % 3), options);
+  r.startHalfedge = h;
+  return r;
 }
 
 }  // namespace
 
 TraceResult traceFromPoint(const IntrinsicTriangulation& tri, const BackgroundModel& model, int face,
-                           const std::array<Vec3, 3>& corners, const Vec3& start, const Vec3& target) {
-  return walk(tri, model, face, corners, start, target, 7u);
+                           const std::array<Vec3, 3>& corners, const Vec3& start, const Vec3& target,
+                           const TraceOptions& options) {
+  return walk(tri, model, face, corners, start, target, 7u, options);
 }
 
 TraceResult traceFromVertex(const IntrinsicTriangulation& tri, const Signposts& sp, const BackgroundModel& model, int v,
-                            double theta, double length, int hint) {
+                            double theta, double length, int hint, const TraceOptions& options) {
   const HalfedgeMesh& m = tri.mesh;
   // A non-finite direction or length (a circumcentre computed from a degenerate layout) matches no wedge; it would be
   // taken below for a direction leaving the surface, so it is stopped here with the numbers that produced it.
@@ -168,14 +199,18 @@ TraceResult traceFromVertex(const IntrinsicTriangulation& tri, const Signposts& 
                            "): corrupt signposts or a degenerate triangle");
   }
   if (w.halfedge == kInvalid) {
-    // A direction pointing out of the surface at a boundary vertex: the geodesic leaves at once through the nearer
-    // of v's two boundary edges. The target is extrapolated in the plane of that edge's face.
+    // A direction pointing out of the surface at a boundary vertex: the nearer of v's two boundary edges. Either the
+    // geodesic leaves at once through it (the target extrapolated in the plane of that edge's face), or the direction
+    // is snapped onto it.
     const int hOut = m.vertexHalfedge(v);  // outgoing boundary halfedge (angle φ(hOut) starts the fan)
     int hIn = hOut;
     for (int h = hOut; h != kInvalid; h = m.nextOutgoing(h)) hIn = h;  // last outgoing; its prev is incoming boundary
     const double beforeFirst = sp.reduce(v, sp.angle[hOut] - theta);
     const double afterLast = sp.reduce(v, theta - sp.angle[hIn] - fastCornerAngle(tri, hIn));
     const bool useOut = beforeFirst <= afterLast;
+    if (options.outward == OutwardDirection::FollowBoundary)
+      return walkFromWedge(tri, model, useOut ? Wedge{hOut, 0.0} : Wedge{hIn, fastCornerAngle(tri, hIn)}, length,
+                           options);
     const int h = useOut ? hOut : hIn;
     const std::array<Vec3, 3> P = layoutAtHalfedge(tri, model, h);
     TraceResult r;
@@ -188,10 +223,7 @@ TraceResult traceFromVertex(const IntrinsicTriangulation& tri, const Signposts& 
     r.steps = 1;
     return r;
   }
-  const int h = w.halfedge, k = h % 3;
-  const std::array<Vec3, 3> P = layoutAtHalfedge(tri, model, h);
-  const Vec3 t = model.polar(length, w.offset);
-  return walk(tri, model, HalfedgeMesh::face(h), P, BackgroundModel::origin(), t, 1u << ((k + 1) % 3));
+  return walkFromWedge(tri, model, w, length, options);
 }
 
 }  // namespace conformesh::refine

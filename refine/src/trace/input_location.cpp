@@ -56,4 +56,18 @@ double InputSurface::interpolate(const std::vector<double>& values, const InputL
   return s;
 }
 
+std::vector<Eigen::Vector3d> interpolatePositions(const intrinsic::HalfedgeMesh& input,
+                                                  const std::vector<Eigen::Vector3d>& positions,
+                                                  const std::vector<InputLocation>& locations) {
+  std::vector<Eigen::Vector3d> out;
+  if (positions.empty()) return out;
+  out.reserve(locations.size());
+  for (const InputLocation& p : locations) {
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) x += p.bary[k] * positions[input.faceVertex(p.face, k)];
+    out.push_back(x);
+  }
+  return out;
+}
+
 }  // namespace conformesh::refine

@@ -40,3 +40,14 @@ TEST_CASE("convergence sweeps on the ellipsoid and the Kerr horizon at a/M = 0.9
     CHECK(meanOfMeans >= 46.5);
   }
 }
+
+TEST_CASE("ConvergenceOptions::validate needs two target counts of at least 10") {
+  ConvergenceOptions o;
+  CHECK(o.validate().empty());  // the paper's Table 2
+  o.targetVertices = {1000};
+  CHECK_THAT(o.validate(), Catch::Contains("at least two"));
+  o.targetVertices = {1000, 5};
+  CHECK_THAT(o.validate(), Catch::Contains("5") && Catch::Contains("too small"));
+  const auto metric = makeMetric("ellipsoid", {{"f", 0.3}});
+  CHECK_THROWS_WITH(runConvergenceStudy(*metric, o), Catch::Contains("too small"));
+}

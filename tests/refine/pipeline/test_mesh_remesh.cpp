@@ -337,3 +337,20 @@ TEST_CASE("mesh remesh: bad input is named") {
     CHECK_THROWS_WITH(parseRefineMetric("flat"), Catch::Contains("flat") && Catch::Contains("uniformized, input"));
   }
 }
+
+TEST_CASE("MeshRemeshOptions::validate names what is wrong, and is empty for valid options") {
+  MeshRemeshOptions o;
+  CHECK_THAT(o.validate(), Catch::Contains("--eps") && Catch::Contains("found 0"));
+  o.epsilon = 0.1;
+  CHECK(o.validate().empty());
+  o.inputSubdivisions = 7;
+  CHECK_THAT(o.validate(), Catch::Contains("0..6") && Catch::Contains("found 7"));
+  o.inputSubdivisions = 2;
+  CHECK(o.validate().empty());
+  o.refineIn = RefineMetric::Input;
+  CHECK_THAT(o.validate(), Catch::Contains("subdivisions") && Catch::Contains("found 2"));
+  o.inputSubdivisions = 0;
+  CHECK(o.validate().empty());
+  o.uniform = true;
+  CHECK_THAT(o.validate(), Catch::Contains("--uniform"));
+}

@@ -141,3 +141,12 @@ TEST_CASE("remesh: bad parameters are named") {
   o.epsilon = NAN;
   REQUIRE_THROWS_WITH(remeshMetric(*m, o), Catch::Contains("--eps"));
 }
+
+TEST_CASE("RemeshOptions::validate names a bad eps, and is empty for valid options") {
+  RemeshOptions o;
+  CHECK_THAT(o.validate(), Catch::Contains("--eps") && Catch::Contains("found 0"));
+  o.epsilon = INFINITY;
+  CHECK_THAT(o.validate(), Catch::Contains("--eps"));
+  o.epsilon = 0.05;
+  CHECK(o.validate().empty());
+}

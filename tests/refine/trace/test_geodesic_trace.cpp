@@ -257,3 +257,74 @@ TEST_CASE("uniformized cow, spherical edges down to 1e-13: refinement terminates
     CHECK(worstLocation < 1e-9);
   }
 }
+
+// The pull-back's walk (TraceOptions): crossings collected in order on the segment, the corner-angle unfolding giving
+// the same end point, and a direction just outside a boundary vertex's fan followed along the nearer boundary edge.
+TEST_CASE("trace options: edge crossings lie on the segment in order, and outward directions follow the boundary") {
+  const DiskSurface s = disk(4);
+  const InputSurface surface(s.tri);  // the disk's own signposts and model
+  const Signposts& sp = surface.signposts();
+  const BackgroundModel& model = surface.model();
+  const intrinsic::HalfedgeMesh& m = s.tri.mesh;
+  int interior = 0;
+  while (m.isBoundaryVertex(interior)) ++interior;
+  std::vector<EdgeCrossing> crossings;
+  TraceOptions options;
+  options.unfolding = Unfolding::CornerAngle;
+  options.crossings = &crossings;
+  for (double theta = 0.1; theta < 2 * M_PI; theta += 0.7) {
+    crossings.clear();
+    const TraceResult plain = traceFromVertex(s.tri, sp, model, interior, theta, 0.6);
+    const TraceResult r = traceFromVertex(s.tri, sp, model, interior, theta, 0.6, intrinsic::kInvalid, options);
+    REQUIRE(r.reachedTarget());
+    CHECK((s.locate({r.face, r.bary}) - s.locate({plain.face, plain.bary})).norm() < 1e-12);
+    REQUIRE(r.startHalfedge != intrinsic::kInvalid);
+    CHECK(m.tail(r.startHalfedge) == interior);
+    CHECK(static_cast<int>(crossings.size()) == r.steps - 1);
+    const Eigen::Vector2d a = s.positions[interior], b = s.locate({r.face, r.bary});
+    const Eigen::Vector2d u = (b - a).normalized();
+    int face = intrinsic::HalfedgeMesh::face(r.startHalfedge);
+    double along = 0;
+    for (const EdgeCrossing& c : crossings) {
+      CHECK(intrinsic::HalfedgeMesh::face(c.halfedge) == face);
+      CHECK(c.bary[(c.halfedge % 3 + 2) % 3] == 0);
+      CHECK(c.bary.sum() == Approx(1.0));
+      const Eigen::Vector2d x = s.locate({face, c.bary}) - a;
+      CHECK(std::abs(u.x() * x.y() - u.y() * x.x()) < 1e-12);  // on the line
+      CHECK(x.dot(u) >= along);                                // in order
+      along = x.dot(u);
+      face = intrinsic::HalfedgeMesh::face(m.twin(c.halfedge));
+    }
+    CHECK(face == r.face);
+  }
+  // A boundary vertex of the ring disk: a direction 0.01 rad before its first outgoing (boundary) halfedge.
+  int v = 0;
+  while (!m.isBoundaryVertex(v)) ++v;
+  const int hOut = m.vertexHalfedge(v);
+  const double theta = sp.angle[hOut] - 0.01, len = 0.5 * s.tri.length(hOut);
+  const TraceResult left = traceFromVertex(s.tri, sp, model, v, theta, len);
+  CHECK_FALSE(left.reachedTarget());
+  options.outward = OutwardDirection::FollowBoundary;
+  options.crossings = nullptr;
+  const TraceResult followed = traceFromVertex(s.tri, sp, model, v, theta, len, intrinsic::kInvalid, options);
+  REQUIRE(followed.reachedTarget());
+  CHECK(followed.startHalfedge == hOut);
+  const Eigen::Vector2d want =
+      s.positions[v] + len * (s.positions[m.tip(hOut)] - s.positions[v]).normalized();
+  CHECK((s.locate({followed.face, followed.bary}) - want).norm() < 1e-12);
+}
+
+TEST_CASE("interpolatePositions: barycentric combinations of the corners, nothing without positions") {
+  const DiskSurface s = disk(2);
+  std::vector<Eigen::Vector3d> positions;
+  for (const Eigen::Vector2d& p : s.positions) positions.emplace_back(p.x(), p.y(), 0.5 * p.x());
+  const std::vector<InputLocation> at = {{0, {1, 0, 0}}, {3, {0.2, 0.3, 0.5}}, {5, {-0.1, 0.6, 0.5}}};
+  CHECK(interpolatePositions(s.tri.mesh, {}, at).empty());
+  const std::vector<Eigen::Vector3d> got = interpolatePositions(s.tri.mesh, positions, at);
+  REQUIRE(got.size() == at.size());
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    const Eigen::Vector2d p = s.locate(at[i]);
+    CHECK((got[i] - Eigen::Vector3d(p.x(), p.y(), 0.5 * p.x())).norm() < 1e-14);
+  }
+  CHECK((got[0] - positions[s.tri.mesh.faceVertex(0, 0)]).norm() == 0);
+}

@@ -1,8 +1,8 @@
-// convergence_study.h — the paper's experiment (§6, Table 2, Figs. 10–12), run on any smooth metric: remesh one
+// convergence_study.h — the paper's experiment (§6, Table 2, Figs. 10–12) on any smooth metric: remesh one
 // uniformization at a sequence of ε calibrated to hit target vertex counts, measure each mesh's quality in the original
-// metric and its Gaussian-curvature-measure error e_G, and fit the orders: e_G against the mean circumradius (Theorem
-// 3.4: ≥ 1), the mean circumradius against the vertex count (−1/2, Fig. 10b), the area error against the mean
-// circumradius (2).
+// metric and its Gaussian-curvature-measure error e_G (and, with an embedding, the extrinsic checks), and fit the
+// orders: e_G against the mean circumradius (Theorem 3.4: ≥ 1), the mean circumradius against the vertex count
+// (−1/2, Fig. 10b), the area error against the mean circumradius (2). Built on metric_remesh.h; no files.
 #pragma once
 
 #include <functional>
@@ -22,11 +22,8 @@ std::vector<int> paperTable2Vertices();
 
 struct ConvergenceOptions {
   std::vector<int> targetVertices = paperTable2Vertices();
-  // Pipeline settings shared by every level (epsilon is chosen per level). The default T0 resolution here is 10
-  // (≈ 10³ vertices on sphere charts), below the smallest target, so that every level is a refinement of one T0. One
-  // smoothing pass (RefineOptions::smoothingPasses, vertex_smoothing.h): it lifts the mean smallest angle of every
-  // level of the studies in docs/studies.md to ≥ 46.7° (unsmoothed 44.7°–46° on some levels), with the same bounds,
-  // at the cost in e_G (per level −6 % … +20 %) and time (refinement ~3.5×) measured there; 0 is the paper's study.
+  // Pipeline settings shared by every level (epsilon is chosen per level): T0 at resolution 10, below the smallest
+  // target, so that every level refines one T0; one smoothing pass (0 is the paper's study; docs/studies.md).
   RemeshOptions remesh = [] {
     RemeshOptions r;
     r.t0Resolution = 10;
@@ -34,10 +31,8 @@ struct ConvergenceOptions {
     return r;
   }();
   intrinsic::CurvatureMeasureOptions measure;
-  // The extrinsic checks, when the metric has an embedding of its own (SmoothMetric::hasEmbedding): the mean
-  // curvature measure (paper eq. 2 against ∫(κ₁ + κ₂) dA over B(v, 0.08·√area)), the Hausdorff distance and the
-  // normal deviation between each mesh and the surface (Lemmas 4.8, 4.9); embedding/ documents them. Off by default
-  // in the library (they cost about as much as the remeshing); `conformesh convergence` turns them on.
+  // The extrinsic checks, when the metric has an embedding: the mean curvature measure (paper eq. 2), the Hausdorff
+  // distance and the normal deviation (Lemmas 4.8, 4.9). Off by default; `conformesh convergence` turns them on.
   bool extrinsic = false;
   embedding::MeanCurvatureMeasureOptions meanCurvature;
   embedding::ProjectionOptions projection;
@@ -45,6 +40,9 @@ struct ConvergenceOptions {
   // (vertex counts scale like ε⁻²).
   double calibrationTolerance = 0.15;
   std::function<void(const std::string&)> progress;
+
+  // What is wrong with these options ("" when valid): at least two target vertex counts, each at least 10.
+  std::string validate() const;
 };
 
 struct ConvergenceLevel {
@@ -78,6 +76,7 @@ struct ConvergenceStudy {
   double orderNormalDeviationVsCircumradius = 0;
 };
 
+// Runs the study. Throws InputError with options.validate()'s text, and what remeshUniformized throws.
 ConvergenceStudy runConvergenceStudy(const intrinsic::SmoothMetric& metric, const ConvergenceOptions& options = {});
 
 }  // namespace conformesh::refine

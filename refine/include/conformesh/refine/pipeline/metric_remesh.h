@@ -1,8 +1,9 @@
-// remesh.h — the whole pipeline for a surface given by a smooth metric (the paper's §5.1, intrinsically):
-// discretize the chart into T0 → uniformize T0 by discrete Ricci flow (T0*, conformal factor λ) → Delaunay refinement
-// of T0* graded by e^(−λ) (T1*) → pull back: each vertex of T1* goes to its point of T0 through the flow's
-// correspondence, then to the chart by T0's piecewise-linear parametrization, and every edge of the output T1 gets the
-// length of its curve in the ORIGINAL metric.
+// metric_remesh.h — the pipeline for a surface given by a SMOOTH METRIC (the paper's §5.1, intrinsically):
+// discretize the chart into T0 → uniformize T0 by discrete Ricci flow (T0*, conformal factor λ) → Delaunay-refine T0*
+// graded by e^(−λ) (T1*) → pull back: each vertex of T1* to its point of T0 through the flow's correspondence, then
+// to the chart, and every edge of the output T1 gets the length of its curve in the ORIGINAL metric.
+// Pure functions of their arguments: no files, no global state (progress only through the callback).
+// Derivations: docs/refinement.md §9 and "Surfaces whose boundary has corners"; the command: docs/cli.md.
 #pragma once
 
 #include <functional>
@@ -11,28 +12,22 @@
 
 #include <Eigen/Core>
 
+#include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
-#include "conformesh/intrinsic/flow/uniformization.h"
-#include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
 
 namespace conformesh::refine {
 
-// What a chart with one boundary loop (a topological disk) is uniformized to.
+// What a chart with one boundary loop (a topological disk) is uniformized to (docs/refinement.md, "Surfaces whose
+// boundary has corners").
 enum class DiskTarget {
-  // KeepBoundary when the chart has corners (a Rectangle chart: a Bézier patch, a graph over a square), Circle
-  // otherwise (a polar Disk chart, whose boundary is smooth).
-  Auto,
-  // The unit disk (uniformization.h, CircleDomain); refinement splits the boundary on the circle. At a boundary corner
-  // of angle α the conformal map behaves like z^{π/α}, so λ is unbounded there (docs/refinement.md).
-  Circle,
-  // The flat metric with the boundary's lengths kept (boundary_flattening.h): λ = 0 on the boundary, bounded, every
-  // corner keeps its angle; the domain is the polygon of T0's boundary chords and refinement splits its sides at their
-  // midpoints (BoundarySplit::Geodesic).
-  KeepBoundary,
+  Auto,          // KeepBoundary for a Rectangle chart (it has corners), Circle otherwise
+  Circle,        // the unit disk (CircleDomain); the boundary is split on the circle; λ unbounded at corners
+  KeepBoundary,  // flat, boundary lengths kept (boundary_flattening.h); sides split at midpoints (Geodesic)
 };
 std::string toString(DiskTarget target);
 // Parses "auto", "circle", "keep-boundary"; InputError naming the value otherwise.
@@ -42,26 +37,21 @@ struct RemeshOptions {
   // Size bound ε in the ORIGINAL metric: circumradii of the output are ≈ ε or less (paper §4.2.3: the uniformized
   // bound ε·e^(−λ) pulls back to ε). Required, > 0.
   double epsilon = 0;
-  // Shape bound B (circumradius / shortest edge) of the refinement; see RefineOptions::ratioBound.
-  double ratioBound = 1.4142135623730951;
-  // λ ≡ 0: uniform in the uniformized domain (not on the surface); for comparisons only.
-  bool uniform = false;
-  // T0: resolution of the discretization of the chart (DiscretizationOptions::resolution); the discrete conformal map
-  // of T0 is the only approximation of the smooth one, so it should be fine enough that its angle distortion is well
-  // below the refinement's angle bound. 0 = automatic: about a quarter of the output's expected vertex count, at a
-  // resolution between 8 and 32 (≈ 650 to 10⁴ vertices for sphere charts; other charts are sized by a probe at
-  // resolution 8), since refinement only adds vertices to T0.
+  double ratioBound = 1.4142135623730951;  // shape bound B (circumradius / shortest edge), RefineOptions::ratioBound
+  bool uniform = false;                    // λ ≡ 0: uniform in the uniformized domain, for comparisons
+  // Resolution of T0 (DiscretizationOptions::resolution). 0 = automatic: about a quarter of the output's expected
+  // vertex count, at a resolution between 8 and 32.
   int t0Resolution = 0;
-  // Target of the uniformization when the chart is a topological disk (ignored for closed charts).
-  DiskTarget diskTarget = DiskTarget::Auto;
+  DiskTarget diskTarget = DiskTarget::Auto;  // when the chart is a topological disk (ignored for closed charts)
   intrinsic::DiscretizationOptions discretization;
   intrinsic::UniformizationOptions uniformization;
-  // Passed through to the refinement (epsilon, ratioBound and lambda are set from the fields above). Unsmoothed by
-  // default (the paper's refinement, and the fast one: a smoothing pass makes the refinement stage ~3.5× slower);
-  // `refinement.smoothingPasses = 1` lifts the mean smallest angle above 46° on every mesh of docs/studies.md at the
-  // cost documented there (the convergence study's default).
+  // Passed through to the refinement (epsilon, ratioBound and lambda are set from the fields above); unsmoothed by
+  // default, the paper's refinement.
   RefineOptions refinement;
   std::function<void(const std::string&)> progress;
+
+  // What is wrong with these options ("" when valid): ε must be positive and finite.
+  std::string validate() const;
 };
 
 struct RemeshTimes {
@@ -88,7 +78,8 @@ struct RemeshResult {
   RemeshTimes seconds;
 };
 
-// Throws InputError for bad parameters (naming them) and ConvergenceError when a stage does not converge.
+// The whole pipeline. Throws InputError with options.validate()'s text or for a chart the disk target does not fit,
+// ConvergenceError when a stage does not converge (or T0 is too coarse for the metric's lengths).
 RemeshResult remeshMetric(const intrinsic::SmoothMetric& metric, const RemeshOptions& options);
 
 // The first two stages alone, for sweeps that refine one uniformization at several ε (`conformesh convergence`).
@@ -97,19 +88,18 @@ struct UniformizedMetric {
   std::vector<Eigen::Vector3d> t0Reference;  // per T0 vertex: its point on the chart's reference surface
   std::vector<Eigen::Vector2d> t0Chart;      // per T0 vertex: chart coordinates
   intrinsic::Uniformization uniformization;
-  // The disk target used (Auto resolved; Circle also stands for charts without boundary, where it plays no role).
-  // KeepBoundary refines with BoundarySplit::Geodesic.
-  DiskTarget diskTarget = DiskTarget::Circle;
+  DiskTarget diskTarget = DiskTarget::Circle;  // Auto resolved (Circle also for charts without boundary)
   double discretizeSeconds = 0, uniformizeSeconds = 0;
 };
 UniformizedMetric uniformizeMetric(const intrinsic::SmoothMetric& metric, const RemeshOptions& options);
-// Stages 3 and 4 on a prepared uniformization (options.epsilon, ratioBound, uniform and refinement are used).
+// Stages 3 and 4 on a prepared uniformization (options.epsilon, ratioBound, uniform and refinement are used); throws
+// as remeshMetric.
 RemeshResult remeshUniformized(const UniformizedMetric& prepared, const intrinsic::SmoothMetric& metric,
                                const RemeshOptions& options);
 
-// The output for files: faces, edges with their lengths, positions where the metric has an embedding, and per-vertex
-// properties u, v (chart), lambda, curvature (angle deficit / boundary turning), smooth_curvature (K of the metric at
-// the vertex), input_face and input_b0..2 (the vertex's place on T0); comments name the metric and ε.
+// The output for files (remesh_output.cpp): faces, edges with their lengths, positions where the metric has an
+// embedding, and per-vertex properties u, v (chart), lambda, curvature (angle deficit / boundary turning),
+// smooth_curvature (K of the metric at the vertex), input_face and input_b0..2 (the vertex's place on T0).
 intrinsic::MeshData toMeshData(const RemeshResult& result, const intrinsic::SmoothMetric& metric, double epsilon);
 // The same for ParaView: points are the embedding where known, else the chart's reference surface (the unit sphere
 // for sphere charts); the per-vertex properties become point fields.

@@ -9,6 +9,8 @@
 // delaunay_refinement.h) gets the coordinates of the boundary face extended past that chord: one is negative.
 #pragma once
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
@@ -51,5 +53,12 @@ class InputSurface {
   Signposts sp_;
   BackgroundModel model_;
 };
+
+// Positions of located points on a Euclidean input (flat faces) with vertex positions `positions` (per input vertex):
+// Σ_k bary_k · positions[faceVertex(face, k)] per location, extended linearly beyond a boundary chord (a negative
+// coordinate). Returns one position per location, or nothing when `positions` is empty.
+std::vector<Eigen::Vector3d> interpolatePositions(const intrinsic::HalfedgeMesh& input,
+                                                  const std::vector<Eigen::Vector3d>& positions,
+                                                  const std::vector<InputLocation>& locations);
 
 }  // namespace conformesh::refine

@@ -1,0 +1,83 @@
+// pull_back.h — the mesh pipeline's pull-back (internal header of mesh_remesh.cpp): the refined T1* of the uniformized
+// input T0* taken back through the input faces — vertices through the flow's correspondence, each edge traced across
+// T0* (geodesic_trace.h), its pieces mapped to T0, bisected until resolved (image_path.h) and developed into the plane
+// for its length — and the checks of a result against its vertices' places on T0, shared by both routes.
+// Derivation: docs/refinement.md, "Mesh pull-back".
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/refine/delaunay/delaunay_refinement.h"
+#include "conformesh/refine/pipeline/mesh_remesh.h"
+#include "conformesh/refine/trace/geodesic_trace.h"
+#include "pipeline/image_path.h"
+
+namespace conformesh::refine::detail {
+
+// T0: the input, midpoint-subdivided 0 or more times (the same flat surface), with each face's place in the input.
+struct SubdividedInput {
+  intrinsic::IntrinsicTriangulation t0;
+  std::vector<int> parentFace;                               // per T0 face: the input face it lies in
+  std::vector<std::array<Eigen::Vector3d, 3>> parentCorner;  // per T0 face: its corners in that face's coordinates
+};
+
+// Pulls the refinement `refined` of u.uniform (T0*) back onto `input.t0`. run() fills, of `out`: location, lambda,
+// edgePieces, pathPieces, inputEdgeCrossings, pathLength, maxBendExcess and mesh (T1: Euclidean, developed lengths,
+// validated). Throws ConvergenceError naming the output edge when a trace, a bisection (60 rounds) or a development
+// fails on a degenerate input.
+class ImagePathPullBack {
+ public:
+  ImagePathPullBack(const SubdividedInput& input, const intrinsic::Uniformization& u, const RefineResult& refined,
+                    int extraBisections);
+  void run(MeshRemeshResult& out);
+  const std::vector<Point>& vertexImage() const { return vertexImage_; }  // per output vertex, its point on T0
+
+ private:
+  // A straight piece of an output edge inside one T0* face, and its ends' images on T0.
+  struct Piece {
+    int edge = 0;
+    int starFace = 0;
+    Eigen::Vector3d a, b;  // on T0*, coordinates of starFace
+    Point imageA, imageB;  // on T0
+    int depth = 0;         // bisections so far
+    int order = 0;         // index of the traced piece it comes from (pieces of an edge are traced in path order)
+    double t = 0;          // where it starts on that piece, as a fraction of it
+  };
+  struct Record {  // a resolved piece, in path order by (order, t)
+    int edge, order;
+    double t;
+    Resolved r;
+  };
+
+  void mapVertices(MeshRemeshResult& out);
+  void traceEdges();
+  void traceEdge(int e, std::vector<EdgeCrossing>& crossings);
+  void mapPieceEnds();
+  void resolvePieces(MeshRemeshResult& out);
+  std::vector<Piece> bisect(const std::vector<Piece>& unresolved) const;
+  std::vector<double> developLengths(MeshRemeshResult& out);
+
+  const SubdividedInput& input_;
+  const intrinsic::Uniformization& u_;
+  const RefineResult& refined_;
+  const int extraBisections_;
+  const int n0_;                    // T0's vertices: output vertices 0 .. n0−1
+  const Signposts inputSignposts_;  // initialSignposts(T0*): the frame of T1*'s signposts at input vertices
+  const BackgroundModel model_;
+  std::vector<Point> vertexImage_;
+  std::vector<Piece> pieces_;
+  std::vector<int> firstPiece_;  // per output edge, its first piece; one past the end for the last
+  std::vector<Record> records_;
+  std::vector<double> pathLength_;
+};
+
+// Orientation of the output triangles on T0 and the same-face length check (MeshRemeshResult: invertedTriangles,
+// orientationChecked, sameFaceEdges, maxSameFaceLengthError, loopEdges), from the output vertices' points on T0.
+void checkAgainstLocations(const intrinsic::IntrinsicTriangulation& t0, const intrinsic::IntrinsicTriangulation& t1,
+                           const std::vector<Point>& vertexImage, MeshRemeshResult& out);
+
+}  // namespace conformesh::refine::detail
