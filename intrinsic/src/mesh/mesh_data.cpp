@@ -79,8 +79,8 @@ class TriangulationBuilder {
     if (!std::isfinite(l) || !(l > 0))
       throw InputError(describeAt(src_, "edge " + std::to_string(record) + " (" +
                                             std::to_string(data_.edges[record].v0) + ", " +
-                                            std::to_string(data_.edges[record].v1) + ") has length " +
-                                            formatNumber(l) + "; lengths must be finite and positive"));
+                                            std::to_string(data_.edges[record].v1) + ") has length " + formatNumber(l) +
+                                            "; lengths must be finite and positive"));
   }
 
   // Input vertex index of each compacted vertex.

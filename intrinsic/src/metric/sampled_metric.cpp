@@ -1,5 +1,5 @@
-// sampled_metric.cpp — spline interpolation of a sampled metric field (see sampled_metric.h): validation of the samples,
-// the tensor-product cubic B-spline coefficients, and evaluation of g and its derivatives.
+// sampled_metric.cpp — spline interpolation of a sampled metric field (see sampled_metric.h): validation of the
+// samples, the tensor-product cubic B-spline coefficients, and evaluation of g and its derivatives.
 #include "conformesh/intrinsic/metric/sampled_metric.h"
 
 #include <cmath>
