@@ -9,7 +9,8 @@
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
+#include "conformesh/intrinsic/metric/sampled_field_io.h"
 #include "conformesh/intrinsic/metric/sampled_metric.h"
 
 namespace conformesh::apps {

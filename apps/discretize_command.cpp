@@ -21,7 +21,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "conformesh/intrinsic/metric/sampled_metric.h"
 

@@ -27,7 +27,7 @@
 #include "conformesh/embedding/fit/procrustes.h"
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 
 using namespace conformesh;
 

@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "conformesh/intrinsic/io/mesh_io.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/metric/sampled_field_hdf5.h"
 #include "conformesh/intrinsic/metric/sampled_metric.h"
 

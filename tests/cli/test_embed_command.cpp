@@ -13,7 +13,7 @@
 
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 
 namespace fs = std::filesystem;
 using namespace conformesh::intrinsic;

@@ -83,6 +83,11 @@ Eigen::Vector3d naturalProjection(const EmbeddedSurface& surface, const std::arr
   return surface.position(bary.x() * corners[0] + bary.y() * corners[1] + bary.z() * corners[2]);
 }
 
+std::string ProjectionOptions::validate() const {
+  if (samplesPerEdge < 1) return "surface deviation: samplesPerEdge must be ≥ 1";
+  return "";
+}
+
 SurfaceDeviation surfaceDeviation(const intrinsic::HalfedgeMesh& mesh, const std::vector<Eigen::Vector3d>& positions,
                                   const std::vector<Eigen::Vector3d>& referencePoints, const EmbeddedSurface& surface,
                                   const ProjectionOptions& options) {
@@ -94,7 +99,8 @@ SurfaceDeviation surfaceDeviation(const intrinsic::HalfedgeMesh& mesh, const std
   for (int v = 0; v < nV; ++v)
     if (!positions[v].allFinite() || !referencePoints[v].allFinite())
       throw InputError("surface deviation: vertex " + std::to_string(v) + " has a non-finite position or reference");
-  if (options.samplesPerEdge < 1) throw InputError("surface deviation: samplesPerEdge must be ≥ 1");
+  const std::string problem = options.validate();
+  if (!problem.empty()) throw InputError(problem);
 
   Eigen::Vector3d lo = positions[0], hi = positions[0];
   for (const auto& p : positions) {

@@ -71,10 +71,8 @@ void validateInput(const IntrinsicTriangulation& tri, const EmbeddingOptions& op
       if (!options.initialPositions[v].allFinite())
         throw InputError("embed: initial position of vertex " + std::to_string(v) + " is not finite");
   }
-  if (options.tolerance <= 0 || !std::isfinite(options.tolerance))
-    throw InputError("embed: tolerance must be positive, found " + sci(options.tolerance));
-  if (options.regularizerWeight < 0 || !std::isfinite(options.regularizerWeight))
-    throw InputError("embed: regularizer weight must be ≥ 0, found " + sci(options.regularizerWeight));
+  const std::string problem = options.validate();
+  if (!problem.empty()) throw InputError(problem);
 }
 
 // ===================================================================================================================
@@ -322,6 +320,13 @@ ceres::Solver::Summary solve(ceres::Problem& problem, ceres::LinearSolverType li
 }
 
 }  // namespace
+
+std::string EmbeddingOptions::validate() const {
+  if (tolerance <= 0 || !std::isfinite(tolerance)) return "embed: tolerance must be positive, found " + sci(tolerance);
+  if (regularizerWeight < 0 || !std::isfinite(regularizerWeight))
+    return "embed: regularizer weight must be ≥ 0, found " + sci(regularizerWeight);
+  return "";
+}
 
 // =====================================================================================================================
 

@@ -12,8 +12,8 @@
 
 #include <Eigen/LU>
 
-#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/metric/reference_surface.h"
 
 namespace conformesh::intrinsic {
@@ -406,13 +406,18 @@ RegionCurvatureMeasure curvatureMeasureOfSublevelSet(const IntrinsicTriangulatio
       all, [&](int x) { return level[x]; }, r, 0, faceStamp);
 }
 
+std::string CurvatureMeasureOptions::validate() const {
+  if (!(radiusFraction > 0))
+    return "curvature measure: the ball radius fraction must be positive, found " + std::to_string(radiusFraction);
+  return "";
+}
+
 CurvatureMeasureResult gaussianCurvatureMeasure(const IntrinsicTriangulation& mesh,
                                                 const std::vector<Eigen::Vector3d>& referencePoints,
                                                 const SmoothMetric& metric, const CurvatureMeasureOptions& options) {
   const HalfedgeMesh& m = mesh.mesh;
-  if (!(options.radiusFraction > 0))
-    throw InputError("curvature measure: the ball radius fraction must be positive, found " +
-                     std::to_string(options.radiusFraction));
+  const std::string problem = options.validate();
+  if (!problem.empty()) throw InputError(problem);
   const MeasureContext ctx(mesh, referencePoints, metric, options.boundaryTerms);
   CurvatureMeasureResult r;
   r.smoothTotalCurvature = ctx.smoothTotal;

@@ -81,13 +81,9 @@ EdgeGroups groupByIds(const std::vector<std::array<int, 3>>& cornerEdgeIds, cons
   return groups;
 }
 
-}  // namespace
-
-// === construction
-
-HalfedgeMesh HalfedgeMesh::fromFaces(const std::vector<std::array<int, 3>>& inputFaces, int nVertices,
-                                     const std::string& source, BuildReport* report,
-                                     const std::vector<std::array<int, 3>>& cornerEdgeIds) {
+// The input checks that need no connectivity: sizes, index ranges and (for a soup) repeated vertices.
+void checkFaceList(const std::vector<std::array<int, 3>>& inputFaces, int nVertices, const std::string& source,
+                   const std::vector<std::array<int, 3>>& cornerEdgeIds) {
   if (inputFaces.empty()) throw InputError(describeAt(source, "the mesh has no faces"));
   if (nVertices <= 0) throw InputError(describeAt(source, "the mesh has no vertices"));
   if (!cornerEdgeIds.empty() && cornerEdgeIds.size() != inputFaces.size())
@@ -106,7 +102,147 @@ HalfedgeMesh HalfedgeMesh::fromFaces(const std::vector<std::array<int, 3>>& inpu
     if (cornerEdgeIds.empty() && (fv[0] == fv[1] || fv[1] == fv[2] || fv[0] == fv[2]))
       throw InputError(describeAt(source, "face " + std::to_string(f) + " " + faceString(fv) + " repeats a vertex"));
   }
+}
 
+// Throws for an edge group of more than two halfedges (a non-manifold edge), naming its faces.
+void checkManifoldEdges(const EdgeGroups& groups, const std::vector<int>& tail, const std::string& source) {
+  const int nGroups = static_cast<int>(groups.start.size()) - 1;
+  for (int g = 0; g < nGroups; ++g) {
+    const int size = groups.start[g + 1] - groups.start[g];
+    if (size > 2) {
+      const int h0 = groups.members[groups.start[g]];
+      std::string fs;
+      for (int i = groups.start[g]; i < groups.start[g + 1]; ++i)
+        fs += (fs.empty() ? "" : ", ") + std::to_string(groups.members[i] / 3);
+      throw InputError(describeAt(source, "non-manifold edge (" + std::to_string(tail[h0]) + ", " +
+                                              std::to_string(tail[HalfedgeMesh::next(h0)]) + ") is shared by " +
+                                              std::to_string(size) + " faces: " + fs + "; at most 2 are allowed"));
+    }
+  }
+}
+
+// Which faces to flip so that glued halfedges run opposite ways: breadth-first over each component, keeping the
+// orientation of its majority (so a mostly consistent input changes least). Throws for a non-orientable component and,
+// with edge ids, for two faces glued with clashing orientations.
+class OrientationSearch {
+ public:
+  OrientationSearch(const EdgeGroups& groups, const std::vector<int>& tail,
+                    const std::vector<std::array<int, 3>>& edgeIds, const std::string& source)
+      : tail_(tail), edgeIds_(edgeIds), source_(source), nF_(static_cast<int>(tail.size()) / 3) {
+    findPartners(groups);
+  }
+
+  std::vector<signed char> run() {
+    flipFace_.assign(nF_, -1);
+    queue_.reserve(nF_);
+    for (int seed = 0; seed < nF_; ++seed) {
+      if (flipFace_[seed] >= 0) continue;
+      orientComponent(seed);
+      keepMajority();
+    }
+    return flipFace_;
+  }
+
+ private:
+  void findPartners(const EdgeGroups& groups) {
+    const int nGroups = static_cast<int>(groups.start.size()) - 1;
+    partner_.assign(tail_.size(), kInvalid);
+    for (int g = 0; g < nGroups; ++g)
+      if (groups.start[g + 1] - groups.start[g] == 2) {
+        const int a = groups.members[groups.start[g]], b = groups.members[groups.start[g] + 1];
+        if (a / 3 == b / 3 && edgeIds_.empty())
+          throw InputError(describeAt(source_, "face " + std::to_string(a / 3) + " is glued to itself"));
+        partner_[a] = b;
+        partner_[b] = a;
+      }
+  }
+
+  void orientComponent(int seed) {
+    flipFace_[seed] = 0;
+    queue_.assign(1, seed);
+    for (size_t qi = 0; qi < queue_.size(); ++qi) {
+      const int f = queue_[qi];
+      for (int k = 0; k < 3; ++k) {
+        const int h = 3 * f + k, p = partner_[h];
+        if (p == kInvalid) continue;
+        const int g = p / 3;
+        const signed char want = static_cast<signed char>(flipFace_[f] ^ (disagree(f, k, h, p) ? 1 : 0));
+        if (flipFace_[g] < 0) {
+          flipFace_[g] = want;
+          queue_.push_back(g);
+        } else if (flipFace_[g] != want) {
+          throw InputError(describeAt(source_,
+                                      "the surface is not orientable: no consistent orientation exists for "
+                                      "the component containing face " +
+                                          std::to_string(seed) + " (conflict at faces " + std::to_string(f) + " and " +
+                                          std::to_string(g) + ")"));
+        }
+      }
+    }
+  }
+
+  // Same direction (tail(h) == tail(p)) means the two faces disagree in the input. A self-loop's direction cannot be
+  // read off its vertices: Δ-complexes given with edge ids are taken as oriented by their corner order.
+  bool disagree(int f, int k, int h, int p) const {
+    using M = HalfedgeMesh;
+    const bool sameWay = tail_[h] == tail_[p] && tail_[M::next(h)] == tail_[M::next(p)];
+    const bool loop = tail_[h] == tail_[M::next(h)];
+    if (!edgeIds_.empty() && sameWay && !loop)
+      throw InputError(describeAt(source_, "faces " + std::to_string(f) + " and " + std::to_string(p / 3) +
+                                               " are glued by edge_index " + std::to_string(edgeIds_[f][k]) +
+                                               " with clashing orientations"));
+    return sameWay && !loop;
+  }
+
+  void keepMajority() {
+    size_t flipped = 0;
+    for (int f : queue_) flipped += flipFace_[f];
+    if (2 * flipped > queue_.size())
+      for (int f : queue_) flipFace_[f] ^= 1;
+  }
+
+  const std::vector<int>& tail_;
+  const std::vector<std::array<int, 3>>& edgeIds_;
+  const std::string& source_;
+  const int nF_;
+  std::vector<int> partner_, queue_;
+  std::vector<signed char> flipFace_;
+};
+
+// Every vertex must be used, and its corners must form exactly one fan.
+void checkVertexFans(const HalfedgeMesh& m, const std::string& source) {
+  const int nVertices = m.nVertices(), nH = m.nHalfedges();
+  std::vector<int> corners(nVertices, 0);
+  for (int h = 0; h < nH; ++h) ++corners[m.tail(h)];
+  for (int v = 0; v < nVertices; ++v) {
+    if (m.vertexHalfedge(v) == kInvalid)
+      throw InputError(describeAt(
+          source, "vertex " + std::to_string(v) + " belongs to no face (remove unreferenced vertices first)"));
+    int count = 0;
+    const int start = m.vertexHalfedge(v);
+    int h = start;
+    do {
+      ++count;
+      h = m.nextOutgoing(h);
+    } while (h != kInvalid && h != start && count <= corners[v]);
+    if (count != corners[v])
+      throw InputError(describeAt(source, "pinched vertex " + std::to_string(v) + ": its " +
+                                              std::to_string(corners[v]) +
+                                              " faces form more than one fan (one fan "
+                                              "has " +
+                                              std::to_string(count) + ")"));
+  }
+}
+
+}  // namespace
+
+// === construction
+
+HalfedgeMesh HalfedgeMesh::fromFaces(const std::vector<std::array<int, 3>>& inputFaces, int nVertices,
+                                     const std::string& source, BuildReport* report,
+                                     const std::vector<std::array<int, 3>>& cornerEdgeIds) {
+  checkFaceList(inputFaces, nVertices, source, cornerEdgeIds);
+  const int nF = static_cast<int>(inputFaces.size());
   std::vector<std::array<int, 3>> faces = inputFaces;
   std::vector<std::array<int, 3>> edgeIds = cornerEdgeIds;
   HalfedgeMesh m;
@@ -119,72 +255,11 @@ HalfedgeMesh HalfedgeMesh::fromFaces(const std::vector<std::array<int, 3>>& inpu
   loadTails();
 
   EdgeGroups groups = edgeIds.empty() ? groupByEndpoints(m.tail_, nVertices) : groupByIds(edgeIds, source);
-  const int nGroups = static_cast<int>(groups.start.size()) - 1;
-  for (int g = 0; g < nGroups; ++g) {
-    const int size = groups.start[g + 1] - groups.start[g];
-    if (size > 2) {
-      const int h0 = groups.members[groups.start[g]];
-      std::string fs;
-      for (int i = groups.start[g]; i < groups.start[g + 1]; ++i)
-        fs += (fs.empty() ? "" : ", ") + std::to_string(groups.members[i] / 3);
-      throw InputError(describeAt(source, "non-manifold edge (" + std::to_string(m.tail_[h0]) + ", " +
-                                              std::to_string(m.tail_[next(h0)]) + ") is shared by " +
-                                              std::to_string(size) + " faces: " + fs + "; at most 2 are allowed"));
-    }
-  }
+  checkManifoldEdges(groups, m.tail_, source);
 
-  // --- orientation: breadth-first over faces; two glued halfedges running the same way force opposite orientations.
-  std::vector<int> partner(nH, kInvalid);
-  for (int g = 0; g < nGroups; ++g)
-    if (groups.start[g + 1] - groups.start[g] == 2) {
-      const int a = groups.members[groups.start[g]], b = groups.members[groups.start[g] + 1];
-      if (a / 3 == b / 3 && edgeIds.empty())
-        throw InputError(describeAt(source, "face " + std::to_string(a / 3) + " is glued to itself"));
-      partner[a] = b;
-      partner[b] = a;
-    }
-  std::vector<signed char> flipFace(nF, -1);
-  std::vector<int> queue;
-  queue.reserve(nF);
+  // --- orientation: two glued halfedges running the same way force opposite orientations.
+  const std::vector<signed char> flipFace = OrientationSearch(groups, m.tail_, edgeIds, source).run();
   int reoriented = 0;
-  for (int seed = 0; seed < nF; ++seed) {
-    if (flipFace[seed] >= 0) continue;
-    flipFace[seed] = 0;
-    queue.assign(1, seed);
-    for (size_t qi = 0; qi < queue.size(); ++qi) {
-      const int f = queue[qi];
-      for (int k = 0; k < 3; ++k) {
-        const int h = 3 * f + k, p = partner[h];
-        if (p == kInvalid) continue;
-        const int g = p / 3;
-        // Same direction (tail(h) == tail(p)) means the two faces disagree in the input. A self-loop's direction
-        // cannot be read off its vertices: Δ-complexes given with edge ids are taken as oriented by their corner order.
-        const bool sameWay = m.tail_[h] == m.tail_[p] && m.tail_[next(h)] == m.tail_[next(p)];
-        const bool loop = m.tail_[h] == m.tail_[next(h)];
-        if (!edgeIds.empty() && sameWay && !loop)
-          throw InputError(describeAt(source, "faces " + std::to_string(f) + " and " + std::to_string(g) +
-                                                  " are glued by edge_index " + std::to_string(edgeIds[f][k]) +
-                                                  " with clashing orientations"));
-        const bool disagree = sameWay && !loop;
-        const signed char want = static_cast<signed char>(flipFace[f] ^ (disagree ? 1 : 0));
-        if (flipFace[g] < 0) {
-          flipFace[g] = want;
-          queue.push_back(g);
-        } else if (flipFace[g] != want) {
-          throw InputError(describeAt(source,
-                                      "the surface is not orientable: no consistent orientation exists for "
-                                      "the component containing face " +
-                                          std::to_string(seed) + " (conflict at faces " + std::to_string(f) + " and " +
-                                          std::to_string(g) + ")"));
-        }
-      }
-    }
-    // Keep the orientation of the majority of each component, so a mostly consistent input changes least.
-    size_t flipped = 0;
-    for (int f : queue) flipped += flipFace[f];
-    if (2 * flipped > queue.size())
-      for (int f : queue) flipFace[f] ^= 1;
-  }
   for (int f = 0; f < nF; ++f)
     if (flipFace[f]) {
       ++reoriented;
@@ -217,32 +292,13 @@ HalfedgeMesh HalfedgeMesh::fromFaces(const std::vector<std::array<int, 3>>& inpu
     }
   }
 
-  // --- vertices: every vertex must be used, and its corners must form exactly one fan.
+  // --- vertices: an outgoing halfedge each (the boundary one where there is one), then one fan per vertex.
   m.vertexHalfedge_.assign(nVertices, kInvalid);
-  std::vector<int> corners(nVertices, 0);
   for (int h = 0; h < nH; ++h) {
     const int v = m.tail_[h];
-    ++corners[v];
     if (m.vertexHalfedge_[v] == kInvalid || m.twin_[h] == kInvalid) m.vertexHalfedge_[v] = h;
   }
-  for (int v = 0; v < nVertices; ++v) {
-    if (m.vertexHalfedge_[v] == kInvalid)
-      throw InputError(describeAt(
-          source, "vertex " + std::to_string(v) + " belongs to no face (remove unreferenced vertices first)"));
-    int count = 0;
-    const int start = m.vertexHalfedge_[v];
-    int h = start;
-    do {
-      ++count;
-      h = m.nextOutgoing(h);
-    } while (h != kInvalid && h != start && count <= corners[v]);
-    if (count != corners[v])
-      throw InputError(describeAt(source, "pinched vertex " + std::to_string(v) + ": its " +
-                                              std::to_string(corners[v]) +
-                                              " faces form more than one fan (one fan "
-                                              "has " +
-                                              std::to_string(count) + ")"));
-  }
+  checkVertexFans(m, source);
   return m;
 }
 

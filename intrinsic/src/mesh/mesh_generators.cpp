@@ -522,175 +522,224 @@ std::vector<int> firstWithSamePair(const std::vector<int>& lo, const std::vector
   return first;
 }
 
+// The steps of perturbLengths over their shared state: the edge of every face corner, the unperturbed lengths, the
+// slack each face must keep and the drawn offsets t_e.
+class LengthPerturbation {
+ public:
+  LengthPerturbation(MeshData& data, double amplitude, unsigned seed)
+      : data_(data), amplitude_(amplitude), seed_(seed), where_(data.source.empty() ? "perturbLengths" : data.source) {}
+
+  PerturbReport run() {
+    checkInput();
+    faceEdges_.resize(nF_);
+    if (!data_.edges.empty())
+      takeRecordedLengths();
+    else
+      takeLengthsFromPositions();
+    computeRequiredSlack();
+    draw();
+    PerturbReport report;
+    report.edges = nE_;
+    shrinkOffenders(report);
+    writeBack(report);
+    return report;
+  }
+
+ private:
+  void fail(const std::string& what) const { throw InputError(describeAt(where_, what)); }
+
+  // The amplitude's range, the corner-edge table's size and the faces' vertex indices.
+  void checkInput() {
+    if (!(amplitude_ >= 0 && amplitude_ < 1))
+      fail("perturbation amplitude must be in [0, 1) so lengths stay positive, found " + fmt(amplitude_));
+    nF_ = static_cast<int>(data_.faces.size()), nV_ = data_.nVertices;
+    if (!data_.cornerEdges.empty() && data_.cornerEdges.size() != data_.faces.size())
+      fail("cornerEdges has " + std::to_string(data_.cornerEdges.size()) + " entries, expected one per face (" +
+           std::to_string(nF_) + ")");
+    for (int f = 0; f < nF_; ++f)
+      for (int k = 0; k < 3; ++k)
+        if (data_.faces[f][k] < 0 || data_.faces[f][k] >= nV_)
+          fail("face " + std::to_string(f) + " has vertex index " + std::to_string(data_.faces[f][k]) +
+               ", expected 0.." + std::to_string(nV_ - 1));
+  }
+
+  // Lengths from the `edges` records; corners matched through `cornerEdges` or by endpoint pair.
+  void takeRecordedLengths() {
+    for (std::size_t e = 0; e < data_.edges.size(); ++e) {
+      const auto& rec = data_.edges[e];
+      if (!finitePositive(rec.length))
+        fail("edge " + std::to_string(e) + " has length " + fmt(rec.length) + ", expected finite and positive");
+      base_.push_back(rec.length);
+    }
+    if (!data_.cornerEdges.empty())
+      takeCornerEdgeIds();
+    else
+      matchCornersToRecords();
+  }
+
+  void takeCornerEdgeIds() {
+    for (int f = 0; f < nF_; ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int e = data_.cornerEdges[f][k];
+        if (e < 0 || e >= static_cast<int>(data_.edges.size()))
+          fail("face " + std::to_string(f) + " corner " + std::to_string(k) + " names edge " + std::to_string(e) +
+               ", expected 0.." + std::to_string(data_.edges.size() - 1));
+        faceEdges_[f][k] = e;
+      }
+  }
+
+  // Sorted endpoints of the side of face f that starts at corner k.
+  void cornerPair(int f, int k, std::vector<int>& lo, std::vector<int>& hi, std::size_t at) const {
+    const int a = data_.faces[f][k], b = data_.faces[f][(k + 1) % 3];
+    lo[at] = std::min(a, b);
+    hi[at] = std::max(a, b);
+  }
+
+  // Match face sides to edge records by endpoint pair: records first, then the 3F corners, in one bucket sort.
+  void matchCornersToRecords() {
+    const std::size_t nE = data_.edges.size();
+    std::vector<int> lo(nE + 3 * static_cast<std::size_t>(nF_)), hi(lo.size());
+    for (std::size_t e = 0; e < nE; ++e) {
+      const int a = data_.edges[e].v0, b = data_.edges[e].v1;
+      if (a < 0 || a >= nV_ || b < 0 || b >= nV_)
+        fail("edge " + std::to_string(e) + " joins vertices " + std::to_string(a) + " and " + std::to_string(b) +
+             ", expected 0.." + std::to_string(nV_ - 1));
+      lo[e] = std::min(a, b);
+      hi[e] = std::max(a, b);
+    }
+    for (int f = 0; f < nF_; ++f)
+      for (int k = 0; k < 3; ++k) cornerPair(f, k, lo, hi, nE + 3 * f + k);
+    const std::vector<int> first = firstWithSamePair(lo, hi, nV_);
+    for (int f = 0; f < nF_; ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int e = first[nE + 3 * f + k];
+        if (e >= static_cast<int>(nE))
+          fail("face " + std::to_string(f) + " side " + std::to_string(data_.faces[f][k]) + "-" +
+               std::to_string(data_.faces[f][(k + 1) % 3]) + " has no edge record with a length");
+        faceEdges_[f][k] = e;
+      }
+  }
+
+  // No records: one edge per mesh edge (from `cornerEdges` or by endpoint pair), lengths from the positions; the
+  // records are written to data.edges.
+  void takeLengthsFromPositions() {
+    if (data_.positions.size() != static_cast<std::size_t>(nV_))
+      fail("no edge lengths and " + std::to_string(data_.positions.size()) + " positions for " + std::to_string(nV_) +
+           " vertices: nothing to take lengths from");
+    std::vector<EdgeRecord> edges = data_.cornerEdges.empty() ? edgesByEndpoints() : edgesFromCornerIds();
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const Eigen::Vector3d& p = data_.positions[edges[e].v0];
+      const Eigen::Vector3d& q = data_.positions[edges[e].v1];
+      if (!p.allFinite() || !q.allFinite())
+        fail("edge " + std::to_string(edges[e].v0) + "-" + std::to_string(edges[e].v1) +
+             " has a vertex with a non-finite position");
+      edges[e].length = (p - q).norm();
+      base_.push_back(edges[e].length);
+    }
+    data_.edges = std::move(edges);
+  }
+
+  std::vector<EdgeRecord> edgesFromCornerIds() {
+    int nE = 0;
+    for (const auto& ce : data_.cornerEdges)
+      for (int e : ce) {
+        if (e < 0) fail("negative edge id " + std::to_string(e) + " in cornerEdges");
+        nE = std::max(nE, e + 1);
+      }
+    std::vector<EdgeRecord> edges(nE, EdgeRecord{-1, -1, 0});
+    for (int f = 0; f < nF_; ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int e = data_.cornerEdges[f][k];
+        faceEdges_[f][k] = e;
+        edges[e].v0 = data_.faces[f][k];
+        edges[e].v1 = data_.faces[f][(k + 1) % 3];
+      }
+    for (int e = 0; e < nE; ++e)
+      if (edges[e].v0 < 0) fail("edge id " + std::to_string(e) + " is used by no face");
+    return edges;
+  }
+
+  std::vector<EdgeRecord> edgesByEndpoints() {
+    std::vector<EdgeRecord> edges;
+    std::vector<int> lo(3 * static_cast<std::size_t>(nF_)), hi(lo.size());
+    for (int f = 0; f < nF_; ++f)
+      for (int k = 0; k < 3; ++k) cornerPair(f, k, lo, hi, 3 * f + k);
+    const std::vector<int> first = firstWithSamePair(lo, hi, nV_);
+    std::vector<int> idOf(lo.size(), -1);
+    for (std::size_t c = 0; c < lo.size(); ++c) {
+      if (first[c] == static_cast<int>(c)) {
+        idOf[c] = static_cast<int>(edges.size());
+        edges.push_back({data_.faces[c / 3][c % 3], data_.faces[c / 3][(c % 3 + 1) % 3], 0});
+      }
+      faceEdges_[c / 3][c % 3] = idOf[first[c]];
+    }
+    return edges;
+  }
+
+  // The slack each face must keep, and the validity of the input.
+  void computeRequiredSlack() {
+    nE_ = static_cast<int>(base_.size());
+    required_.resize(nF_);
+    for (int f = 0; f < nF_; ++f) {
+      const auto& fe = faceEdges_[f];
+      const double s0 = relativeSlack(base_[fe[0]], base_[fe[1]], base_[fe[2]]);
+      if (!(s0 > 0))
+        fail("face " + std::to_string(f) + " violates the triangle inequality before perturbation: lengths " +
+             fmt(base_[fe[0]]) + ", " + fmt(base_[fe[1]]) + ", " + fmt(base_[fe[2]]));
+      required_[f] = std::min(kPerturbMinRelativeSlack, s0 / 2);
+    }
+  }
+
+  void draw() {
+    std::mt19937 rng(seed_);
+    t_.resize(nE_);
+    for (int e = 0; e < nE_; ++e) t_[e] = 2 * ((static_cast<double>(rng()) + 0.5) / 4294967296.0) - 1;  // in (−1, 1)
+    length_.resize(nE_);
+    for (int e = 0; e < nE_; ++e) length_[e] = base_[e] * (1 + amplitude_ * t_[e]);
+  }
+
+  // Halve the t_e of every offending face's edges (each edge at most once per pass) until every face keeps its slack.
+  void shrinkOffenders(PerturbReport& report) {
+    // After kMaxHalvings halvings t_e < 2⁻⁶⁰ is below round-off relative to 1; it is then set to exactly 0.
+    constexpr int kMaxHalvings = 60;
+    std::vector<int> halvings(nE_, 0), lastPass(nE_, -1);
+    for (bool clean = false; !clean; ++report.passes) {
+      clean = true;
+      for (int f = 0; f < nF_; ++f) {
+        const auto& fe = faceEdges_[f];
+        if (relativeSlack(length_[fe[0]], length_[fe[1]], length_[fe[2]]) >= required_[f]) continue;
+        clean = false;
+        for (int e : fe) {
+          if (lastPass[e] == report.passes) continue;
+          lastPass[e] = report.passes;
+          if (halvings[e]++ == 0) ++report.shrunkEdges;
+          t_[e] = halvings[e] >= kMaxHalvings ? 0.0 : t_[e] / 2;
+          length_[e] = base_[e] * (1 + amplitude_ * t_[e]);
+        }
+      }
+    }
+  }
+
+  void writeBack(PerturbReport& report) {
+    for (int e = 0; e < nE_; ++e) {
+      data_.edges[e].length = length_[e];
+      report.maxRelativeChange = std::max(report.maxRelativeChange, std::abs(length_[e] / base_[e] - 1));
+    }
+  }
+
+  MeshData& data_;
+  const double amplitude_;
+  const unsigned seed_;
+  const std::string where_;
+  int nF_ = 0, nV_ = 0, nE_ = 0;
+  std::vector<std::array<int, 3>> faceEdges_;
+  std::vector<double> base_, required_, t_, length_;
+};
+
 }  // namespace
 
 PerturbReport perturbLengths(MeshData& data, double amplitude, unsigned seed) {
-  const std::string where = data.source.empty() ? "perturbLengths" : data.source;
-  if (!(amplitude >= 0 && amplitude < 1))
-    throw InputError(describeAt(
-        where, "perturbation amplitude must be in [0, 1) so lengths stay positive, found " + fmt(amplitude)));
-  const int nF = static_cast<int>(data.faces.size()), nV = data.nVertices;
-  if (!data.cornerEdges.empty() && data.cornerEdges.size() != data.faces.size())
-    throw InputError(describeAt(where, "cornerEdges has " + std::to_string(data.cornerEdges.size()) +
-                                           " entries, expected one per face (" + std::to_string(nF) + ")"));
-  for (int f = 0; f < nF; ++f)
-    for (int k = 0; k < 3; ++k)
-      if (data.faces[f][k] < 0 || data.faces[f][k] >= nV)
-        throw InputError(describeAt(where, "face " + std::to_string(f) + " has vertex index " +
-                                               std::to_string(data.faces[f][k]) + ", expected 0.." +
-                                               std::to_string(nV - 1)));
-
-  // === the edges of every face corner, and the unperturbed lengths
-  std::vector<std::array<int, 3>> faceEdges(nF);
-  std::vector<double> base;
-  if (!data.edges.empty()) {
-    for (std::size_t e = 0; e < data.edges.size(); ++e) {
-      const auto& rec = data.edges[e];
-      if (!finitePositive(rec.length))
-        throw InputError(describeAt(
-            where, "edge " + std::to_string(e) + " has length " + fmt(rec.length) + ", expected finite and positive"));
-      base.push_back(rec.length);
-    }
-    if (!data.cornerEdges.empty()) {
-      for (int f = 0; f < nF; ++f)
-        for (int k = 0; k < 3; ++k) {
-          const int e = data.cornerEdges[f][k];
-          if (e < 0 || e >= static_cast<int>(data.edges.size()))
-            throw InputError(describeAt(where, "face " + std::to_string(f) + " corner " + std::to_string(k) +
-                                                   " names edge " + std::to_string(e) + ", expected 0.." +
-                                                   std::to_string(data.edges.size() - 1)));
-          faceEdges[f][k] = e;
-        }
-    } else {
-      // Match face sides to edge records by endpoint pair: records first, then the 3F corners, in one bucket sort.
-      const std::size_t nE = data.edges.size();
-      std::vector<int> lo(nE + 3 * static_cast<std::size_t>(nF)), hi(lo.size());
-      for (std::size_t e = 0; e < nE; ++e) {
-        const int a = data.edges[e].v0, b = data.edges[e].v1;
-        if (a < 0 || a >= nV || b < 0 || b >= nV)
-          throw InputError(describeAt(where, "edge " + std::to_string(e) + " joins vertices " + std::to_string(a) +
-                                                 " and " + std::to_string(b) + ", expected 0.." +
-                                                 std::to_string(nV - 1)));
-        lo[e] = std::min(a, b);
-        hi[e] = std::max(a, b);
-      }
-      for (int f = 0; f < nF; ++f)
-        for (int k = 0; k < 3; ++k) {
-          const int a = data.faces[f][k], b = data.faces[f][(k + 1) % 3];
-          lo[nE + 3 * f + k] = std::min(a, b);
-          hi[nE + 3 * f + k] = std::max(a, b);
-        }
-      const std::vector<int> first = firstWithSamePair(lo, hi, nV);
-      for (int f = 0; f < nF; ++f)
-        for (int k = 0; k < 3; ++k) {
-          const int e = first[nE + 3 * f + k];
-          if (e >= static_cast<int>(nE))
-            throw InputError(describeAt(
-                where, "face " + std::to_string(f) + " side " + std::to_string(data.faces[f][k]) + "-" +
-                           std::to_string(data.faces[f][(k + 1) % 3]) + " has no edge record with a length"));
-          faceEdges[f][k] = e;
-        }
-    }
-  } else {
-    if (data.positions.size() != static_cast<std::size_t>(nV))
-      throw InputError(describeAt(where, "no edge lengths and " + std::to_string(data.positions.size()) +
-                                             " positions for " + std::to_string(nV) +
-                                             " vertices: nothing to take lengths from"));
-    std::vector<EdgeRecord> edges;
-    if (!data.cornerEdges.empty()) {
-      int nE = 0;
-      for (const auto& ce : data.cornerEdges)
-        for (int e : ce) {
-          if (e < 0) throw InputError(describeAt(where, "negative edge id " + std::to_string(e) + " in cornerEdges"));
-          nE = std::max(nE, e + 1);
-        }
-      edges.assign(nE, EdgeRecord{-1, -1, 0});
-      for (int f = 0; f < nF; ++f)
-        for (int k = 0; k < 3; ++k) {
-          const int e = data.cornerEdges[f][k];
-          faceEdges[f][k] = e;
-          edges[e].v0 = data.faces[f][k];
-          edges[e].v1 = data.faces[f][(k + 1) % 3];
-        }
-      for (int e = 0; e < nE; ++e)
-        if (edges[e].v0 < 0)
-          throw InputError(describeAt(where, "edge id " + std::to_string(e) + " is used by no face"));
-    } else {
-      std::vector<int> lo(3 * static_cast<std::size_t>(nF)), hi(lo.size());
-      for (int f = 0; f < nF; ++f)
-        for (int k = 0; k < 3; ++k) {
-          const int a = data.faces[f][k], b = data.faces[f][(k + 1) % 3];
-          lo[3 * f + k] = std::min(a, b);
-          hi[3 * f + k] = std::max(a, b);
-        }
-      const std::vector<int> first = firstWithSamePair(lo, hi, nV);
-      std::vector<int> idOf(lo.size(), -1);
-      for (std::size_t c = 0; c < lo.size(); ++c) {
-        if (first[c] == static_cast<int>(c)) {
-          idOf[c] = static_cast<int>(edges.size());
-          edges.push_back({data.faces[c / 3][c % 3], data.faces[c / 3][(c % 3 + 1) % 3], 0});
-        }
-        faceEdges[c / 3][c % 3] = idOf[first[c]];
-      }
-    }
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-      const Eigen::Vector3d& p = data.positions[edges[e].v0];
-      const Eigen::Vector3d& q = data.positions[edges[e].v1];
-      if (!p.allFinite() || !q.allFinite())
-        throw InputError(describeAt(where, "edge " + std::to_string(edges[e].v0) + "-" + std::to_string(edges[e].v1) +
-                                               " has a vertex with a non-finite position"));
-      edges[e].length = (p - q).norm();
-      base.push_back(edges[e].length);
-    }
-    data.edges = std::move(edges);
-  }
-
-  // === the slack each face must keep, and the validity of the input
-  const int nE = static_cast<int>(base.size());
-  std::vector<double> required(nF);
-  for (int f = 0; f < nF; ++f) {
-    const auto& fe = faceEdges[f];
-    const double s0 = relativeSlack(base[fe[0]], base[fe[1]], base[fe[2]]);
-    if (!(s0 > 0))
-      throw InputError(describeAt(where, "face " + std::to_string(f) +
-                                             " violates the triangle inequality before "
-                                             "perturbation: lengths " +
-                                             fmt(base[fe[0]]) + ", " + fmt(base[fe[1]]) + ", " + fmt(base[fe[2]])));
-    required[f] = std::min(kPerturbMinRelativeSlack, s0 / 2);
-  }
-
-  // === draw, then shrink the offenders until every face keeps its slack
-  std::mt19937 rng(seed);
-  std::vector<double> t(nE);
-  for (int e = 0; e < nE; ++e) t[e] = 2 * ((static_cast<double>(rng()) + 0.5) / 4294967296.0) - 1;  // in (−1, 1)
-  std::vector<double> length(nE);
-  for (int e = 0; e < nE; ++e) length[e] = base[e] * (1 + amplitude * t[e]);
-
-  // After kMaxHalvings halvings t_e < 2⁻⁶⁰ is below round-off relative to 1; it is then set to exactly 0.
-  constexpr int kMaxHalvings = 60;
-  std::vector<int> halvings(nE, 0), lastPass(nE, -1);
-  PerturbReport report;
-  report.edges = nE;
-  for (bool clean = false; !clean; ++report.passes) {
-    clean = true;
-    for (int f = 0; f < nF; ++f) {
-      const auto& fe = faceEdges[f];
-      if (relativeSlack(length[fe[0]], length[fe[1]], length[fe[2]]) >= required[f]) continue;
-      clean = false;
-      for (int e : fe) {
-        if (lastPass[e] == report.passes) continue;  // halve each edge at most once per pass
-        lastPass[e] = report.passes;
-        if (halvings[e]++ == 0) ++report.shrunkEdges;
-        t[e] = halvings[e] >= kMaxHalvings ? 0.0 : t[e] / 2;
-        length[e] = base[e] * (1 + amplitude * t[e]);
-      }
-    }
-  }
-  for (int e = 0; e < nE; ++e) {
-    data.edges[e].length = length[e];
-    report.maxRelativeChange = std::max(report.maxRelativeChange, std::abs(length[e] / base[e] - 1));
-  }
-  return report;
+  return LengthPerturbation(data, amplitude, seed).run();
 }
 
 }  // namespace conformesh::intrinsic

@@ -7,7 +7,7 @@
 
 #include "conformesh/embedding/extrinsic/embedded_surface.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 
 using namespace conformesh;
 using namespace conformesh::embedding;

@@ -15,7 +15,7 @@
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 
 using namespace conformesh;
 using namespace conformesh::embedding;

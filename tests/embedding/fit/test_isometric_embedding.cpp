@@ -11,7 +11,7 @@
 #include "conformesh/embedding/fit/procrustes.h"
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
 #include "support/embedding_test_meshes.h"
 

@@ -12,7 +12,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh/mesh_generators.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
 
 using namespace conformesh::embedding;

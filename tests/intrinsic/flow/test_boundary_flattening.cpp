@@ -15,7 +15,7 @@
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/intrinsic/mesh/mesh_generators.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 
 using namespace conformesh;
 using namespace conformesh::intrinsic;

@@ -18,7 +18,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 
 using namespace conformesh;
 using namespace conformesh::intrinsic;

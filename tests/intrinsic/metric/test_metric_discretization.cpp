@@ -12,7 +12,7 @@
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 
 using namespace conformesh;
 using namespace conformesh::intrinsic;

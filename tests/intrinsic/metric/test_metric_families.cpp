@@ -10,7 +10,7 @@
 
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 
 using namespace conformesh;

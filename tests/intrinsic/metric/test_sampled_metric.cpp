@@ -12,6 +12,7 @@
 #include "conformesh/intrinsic/metric/metric_discretization.h"
 #include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
+#include "conformesh/intrinsic/metric/sampled_field_io.h"
 #include "conformesh/intrinsic/metric/sampled_metric.h"
 
 using namespace conformesh;

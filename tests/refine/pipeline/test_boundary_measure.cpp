@@ -12,7 +12,7 @@
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
 
 using namespace conformesh;

@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/refine/pipeline/convergence_study.h"
 
 using namespace conformesh;

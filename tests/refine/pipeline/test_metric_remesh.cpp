@@ -10,7 +10,7 @@
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"

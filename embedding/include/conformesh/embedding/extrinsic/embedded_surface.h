@@ -44,12 +44,8 @@ class EmbeddedSurface {
   void referenceFrame(const Eigen::Vector3d& y, Eigen::Vector3d& t1, Eigen::Vector3d& t2) const;
 
   // Derivatives of X(a, b) = position(y + a e₁ + b e₂) by second-order central differences with a reference-space
-  // step h (h·|eᵢ| in the parameters). With `curvature`, h = 2e-4·w (w = 1 on sphere charts, else the chart width
-  // min(u₁ − u₀, v₁ − v₀)/π) and 9 evaluations: the truncation h²|X⁗|/12 and the round-off ~4u|X|/h² of the second
-  // differences are both ≈ 1e-8 relative for a surface curving on the chart's scale, and the first derivatives (so
-  // the normal and the area factor) carry the truncation h²|X‴|/6, ≈ 4e-8 relative on the unit sphere. Without it
-  // (first derivatives only, 5 evaluations), h = 1e-5·w: truncation ≈ h² ≈ 1e-10 relative (measured on the sphere,
-  // where the gnomonic step adds to |X‴|), round-off u|X|/h ≈ 1e-11.
+  // step h: with `curvature`, h = 2e-4·w (w = 1 on sphere charts, else min(u₁ − u₀, v₁ − v₀)/π), 9 evaluations, ≈ 1e-8
+  // relative; without, first derivatives only, h = 1e-5·w, 5 evaluations, ≈ 1e-10. docs/embedding.md derives the steps.
   LocalSurfaceJet jet(const Eigen::Vector3d& y, const Eigen::Vector3d& e1, const Eigen::Vector3d& e2,
                       bool curvature = true) const;
 

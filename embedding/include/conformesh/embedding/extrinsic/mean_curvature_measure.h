@@ -1,17 +1,12 @@
-// mean_curvature_measure.h — the paper's extrinsic convergence check (eqs. 2 and 4–6, Theorem 3.4; §6.2): for each
-// vertex v of a mesh T in R³, the ball B = B(v, r) and
-//   discrete  φ_T^H(B) = Σ_e |e ∩ B| β(e)                       (eq. 2, the normal-cycle form of Cohen-Steiner–Morvan:
-//                                                                 |e ∩ B| the length of the edge inside the ball,
-//                                                                 β(e) the signed angle between its faces' normals,
-//                                                                 positive on convex edges)
-//   smooth    φ_M^H(B) = ∫_{B ∩ M} (κ₁ + κ₂) dA                  (over the surface points inside the same ball)
-// with r = 0.08·√area as in the paper's §6.2. The smooth side uses the metric's embedding (embedded_surface.h).
-//
-// Convention: Σ |e| β(e) over a fine mesh tends to ∫ (κ₁ + κ₂) dA (a prism around a cylinder of radius R, length ℓ:
-// Σ |e| β = 2πℓ = ∫ 1/R dA), so "H" in eq. 2 is the SUM of the principal curvatures — twice the average mean
-// curvature. Boundary edges have no β and contribute nothing (the boundary terms of the normal cycle are left out).
+// mean_curvature_measure.h — the paper's extrinsic convergence check (eqs. 2 and 4–6, Theorem 3.4; §6.2): per vertex v
+// of a mesh T in R³, the ball B = B(v, r), r = 0.08·√area, and
+//   discrete  φ_T^H(B) = Σ_e |e ∩ B| β(e)       (eq. 2; β(e) the signed dihedral angle, positive on convex edges)
+//   smooth    φ_M^H(B) = ∫_{B ∩ M} (κ₁ + κ₂) dA  (over the surface points inside the same ball)
+// "H" is the SUM of the principal curvatures; boundary edges contribute nothing. The smooth side uses the metric's
+// embedding (embedded_surface.h). Reads the mesh and the surface only. docs/embedding.md has the derivation.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,18 +19,19 @@ namespace conformesh::embedding {
 struct MeanCurvatureMeasureOptions {
   // Ball radius r as a fraction of √(area of T): 0.08 in the paper for the mean curvature measure (§6.2).
   double radiusFraction = 0.08;
-  // The smooth integral is assembled from the mesh's triangles: each triangle's image (η: the reference triangle
-  // mapped to the surface) is split into 4^subdivision sub-triangles, each integrated with the degree-2 edge-midpoint
-  // rule (error O(h⁴) per unit area for sub-triangles of size h: 2e-6 relative on the whole ellipsoid at h ≈ 0.07). A
-  // sub-triangle cut by the sphere ∂B counts with its part where the quadratic interpolant of |X − v| − r through its
-  // corners and edge midpoints is negative (rim error O(h³); 1e-4 relative on the sphere's balls at h/r ≈ 0.25),
-  // far below the e_H ~ ε measured.
+  // Each triangle's image η(t) is split into 4^subdivision sub-triangles integrated by the degree-2 edge-midpoint rule
+  // (error O(h⁴)); a sub-triangle cut by ∂B counts with its part inside the quadratic interpolant of |X − v| − r
+  // (rim error O(h³)). 0..6.
   int subdivision = 1;
   // Histogram of relative errors over [−histogramRange, histogramRange] (the paper's Fig. 12 uses ±0.1) and the band
   // counted as "within" (paper: ±0.05).
   double histogramRange = 0.1;
   int histogramBins = 40;
   double withinBand = 0.05;
+
+  // What is wrong with these options ("" when valid): subdivision in 0..6, positive radius fraction and histogram
+  // range, at least one bin.
+  std::string validate() const;
 };
 
 struct MeanCurvatureMeasureResult {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -20,14 +21,16 @@ namespace conformesh::embedding {
 
 struct ProjectionOptions {
   // Gauss–Newton on min |X(y) − q|² over reference points y stops when the step moves X by less than stepTolerance
-  // times the distance scale max(|q − X|, 1e-3·diameter of the bounding box of the mesh) — well below the O(ε²)
-  // distances measured, and above the ~1e-10 accuracy of the finite-difference tangents (embedded_surface.h), which
-  // also bounds the foot point's accuracy: ~1e-10 × the distance |q − π(q)|.
+  // times the distance scale max(|q − X|, 1e-3·diameter of the bounding box of the mesh): below the O(ε²) distances
+  // compared, above the ~1e-10 accuracy of the finite-difference tangents (embedded_surface.h).
   double stepTolerance = 1e-9;
   int maxIterations = 50;
   // Each triangle is sampled at the barycentric points (i, j, k)/n, i + j + k = n (its corners included): n = 4 gives
   // 15 points per triangle, enough to see the maximum of the O(ε²) gap, which sits inside the triangle.
   int samplesPerEdge = 4;
+
+  // What is wrong with these options ("" when valid): samplesPerEdge ≥ 1.
+  std::string validate() const;
 };
 
 struct ProjectedPoint {

@@ -27,28 +27,13 @@ struct EmbeddingOptions {
   std::vector<Eigen::Vector3d> initialPositions;
   // Landmarks for the MDS start: farthest-point samples; k·V log V Dijkstra work and a k×k eigenproblem.
   int landmarks = 48;
-  // Verdict threshold on the largest relative edge residual. A length set that some polyhedron realizes is fitted to
-  // round-off — relative residuals ~1e-15…1e-12: the Jacobian's conditioning (~ number of vertices) times double
-  // precision — while a metric without a realization leaves residuals of the size of the defect it cannot absorb,
-  // ≳ 1e-5 for meshes coarse enough to fit at all. 1e-8 sits far from both.
+  // Verdict threshold on the largest relative edge residual: realizable lengths fit to ~1e-15…1e-12, lengths without a
+  // realization leave ≳ 1e-5; docs/embedding.md ("Isometric embedding by Ceres") explains the choice.
   double tolerance = 1e-8;
-  // Weight w of the dihedral-smoothness regularizer of the first solve: per interior edge the residual 2w·sin(β/2), β
-  // the signed angle between the unit normals n₁, n₂ of its two faces, whose square is w²|n₁ − n₂|². From a rough start
-  // it steers LM away from folded configurations: a vertex popped inward (the same edge lengths, a different
-  // polyhedron) has |n₁ − n₂| = O(1) on its star, a smooth surface O(ε·κ). The first solve runs in three stages, w,
-  // w/10 and w/100, each from the previous optimum, so that the regularizer's bias shrinks before the second solve
-  // drops it (w = 0) and the final positions answer to the lengths alone: started from the w optimum directly, the
-  // second solve popped vertices at 50 412 vertices (docs/embedding.md). On ellipsoid meshes of 640–5700 vertices 0.01
-  // let popped vertices through, 0.1 and 1 did not. The default is 1 because the regularizer must also stiffen the
-  // smooth bending modes, which the edge lengths of a fine mesh barely constrain: for a bending mode of fixed
-  // wavelength its energy does not depend on h while the edge terms' grows like 1/h² (their number), so its relative
-  // stiffness falls like h² (w ∝ 1/h keeps it), and at 198 812 vertices w = 0.1 let the first LM steps run off along
-  // them (rejected, trust region collapsed, ≈ 0.3 % cost decrease per step thereafter), while w = 1 (and 0.32) took
-  // accepted steps from the first; at 20 252 vertices w = 1 needs 7 regularized steps instead of 44 and reaches the
-  // same convex realization. 0 skips the first solve. The first solve takes inexact LM steps (CGNR,
-  // Jacobi-preconditioned conjugate gradients: it only has to reach the right basin, and its normal equations couple
-  // 2-rings: an exact step cost ≈ 15× a second-solve step at 20k); the second takes exact ones (SPARSE_NORMAL_CHOLESKY,
-  // nested-dissection order) to converge to round-off.
+  // Weight w of the dihedral-smoothness regularizer of the first solve: per interior edge the residual 2w·sin(β/2),
+  // β the signed angle between its faces' unit normals. The first solve runs in three stages w, w/10, w/100 (inexact
+  // CGNR steps), the second drops it (w = 0, exact SPARSE_NORMAL_CHOLESKY steps) so the positions answer to the lengths
+  // alone; 0 skips the first solve. docs/embedding.md derives the stages and the default.
   double regularizerWeight = 1;
   int maxIterationsRegularized = 100;  // per stage of the first solve
   int maxIterations = 200;
@@ -56,6 +41,10 @@ struct EmbeddingOptions {
   int threads = 1;
   // One line per LM iteration ("fit iteration 7: cost …, max step …") and per stage.
   std::function<void(const std::string&)> progress;
+
+  // What is wrong with these options ("" when valid): tolerance finite and > 0, regularizerWeight finite and ≥ 0.
+  // (initialPositions are checked against the mesh by fitIsometricEmbedding.)
+  std::string validate() const;
 };
 
 struct EmbeddingResult {

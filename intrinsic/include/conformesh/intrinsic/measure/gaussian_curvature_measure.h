@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -47,27 +48,23 @@ enum class MeasureRegion {
 
 struct CurvatureMeasureOptions {
   MeasureRegion region = MeasureRegion::GeodesicBall;
-  // true (default): the boundary atoms above on both sides. false: interior vertices' deficits against ∫K dA only (the
-  // behaviour before boundary terms, a one-sided bias of −5 % to −1 % in balls that reach the boundary). No effect on
-  // closed surfaces.
+  // true (default): the boundary atoms above on both sides. false: interior vertices' deficits against ∫K dA only.
+  // No effect on closed surfaces.
   bool boundaryTerms = true;
   // Ball radius r as a fraction of √(area of T): the paper uses 0.05 for the Gaussian measure (§6.2).
   double radiusFraction = 0.05;
-  // The smooth side is integrated triangle by triangle with Radon's 7-point degree-5 rule on the pulled-back density
-  // K √det g: for triangles of size h its error is O(h⁶) per unit area, ~10⁻¹⁰ relative at the coarsest meshes
-  // measured, far below the O(ε) errors of the check (the tests compare Σ ∫K dA with 2πχ). The boundary integrals ∫k_g
-  // ds use the 4-point Gauss–Legendre rule on each boundary edge's curve (or on the part a ball's rim leaves inside):
-  // error ≈ 5.6e-10·|f⁽⁸⁾| for the integrand f on the edge's parameter interval [0, 1], i.e. O(h⁸) relative for an edge
-  // of size h — like the area rule, far below the O(ε) errors of the check. Histogram of relative errors over
-  // [−histogramRange, histogramRange] in `histogramBins` bins (paper Fig. 12: ±0.1), and the band counted as "within"
-  // (paper: ±0.05).
+  // Histogram of relative errors over [−histogramRange, histogramRange] in `histogramBins` bins (paper Fig. 12: ±0.1),
+  // and the band counted as "within" (paper: ±0.05). The quadrature rules (Radon 7-point on ∫K dA, 4-point
+  // Gauss–Legendre on ∫k_g ds) are fixed; docs/theory.md §5 gives their error orders.
   double histogramRange = 0.1;
   int histogramBins = 40;
   double withinBand = 0.05;
   // Called with (balls done, balls in all) after every hundredth of the balls and after the last; may be empty. The
-  // check's cost is Σ over vertices of the ball's size, and the radius is a fixed fraction of √area, so a ball holds a
-  // fixed fraction (≈ π·0.05² ≈ 0.8 %) of the vertices: O(V²), minutes from a few 10⁵ vertices on.
+  // check costs O(V²): each ball holds a fixed fraction of the vertices.
   std::function<void(int, int)> progress;
+
+  // What is wrong with these options ("" when valid): radiusFraction > 0.
+  std::string validate() const;
 };
 
 struct CurvatureMeasureResult {

@@ -1,5 +1,5 @@
 // metric_families.h — the built-in Riemannian metrics, each with its chart, closed-form curvature and (where it has
-// one) its embedding and exact geodesic distance, plus a registry that builds them by name from `key=value` parameters.
+// one) its embedding and exact geodesic distance. metric_registry.h builds them by name from `key=value` parameters.
 //
 // Families: round sphere; ellipsoid of revolution (GeographicLib); torus of revolution; the Kerr–Newman horizon (Smarr
 // 1973); flat tori of any lattice; spherical cap; hyperbolic (Poincaré) disk; function graphs z = f(x,y); pull-backs of
@@ -223,26 +223,5 @@ std::unique_ptr<ParametricSurfaceMetric> makeFunctionGraph(std::string descripti
 using BezierControlNet = std::array<std::array<Eigen::Vector3d, 4>, 4>;
 SurfaceJet evaluateBezierPatch(const BezierControlNet& net, double u, double v);
 std::unique_ptr<ParametricSurfaceMetric> makeBezierPatch(std::string description, const BezierControlNet& net);
-
-// =====================================================================================================================
-// registry
-
-struct FamilyParameter {
-  std::string name;
-  double defaultValue;
-  std::string meaning;
-};
-struct FamilyInfo {
-  std::string name;
-  std::string summary;  // what the surface is, its chart, topology and closed forms
-  std::vector<FamilyParameter> parameters;
-};
-
-// Every family makeMetric knows, with its parameters and their defaults (what `conformesh discretize --list` prints).
-const std::vector<FamilyInfo>& metricFamilies();
-
-// Builds family `name` with `params` (missing ones take their defaults). Throws InputError naming the family and the
-// parameter for an unknown family, an unknown parameter, or a value outside the family's range.
-std::unique_ptr<SmoothMetric> makeMetric(const std::string& name, const std::map<std::string, double>& params = {});
 
 }  // namespace conformesh::intrinsic

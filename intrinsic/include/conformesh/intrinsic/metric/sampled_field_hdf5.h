@@ -1,4 +1,4 @@
-// sampled_field_hdf5.h — sampled metric fields (sampled_metric.h) in HDF5, the container physics codes write: three
+// sampled_field_hdf5.h — sampled metric fields (sampled_field.h) in HDF5, the container physics codes write: three
 // 2-D datasets g_uu, g_uv, g_vv of shape (NV, NU) and the chart's description as attributes of their group.
 //
 // Layout (docs/metrics.md §4 has an h5py example):
@@ -15,7 +15,7 @@
 
 #include <string>
 
-#include "conformesh/intrinsic/metric/sampled_metric.h"
+#include "conformesh/intrinsic/metric/sampled_field.h"
 
 namespace conformesh::intrinsic {
 
