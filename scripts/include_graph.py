@@ -4,7 +4,11 @@ any include cycle between public modules (see below). Exit status 1 when there i
 import os, re, subprocess, sys, collections
 root = sys.argv[1] if len(sys.argv) > 1 else '.'
 os.chdir(root)
-files = [f for f in subprocess.check_output(['git', 'ls-files']).decode().split() if re.match(r'(intrinsic|embedding|refine)/.*\.(h|cpp)$', f)]
+def listed():  # the tracked files, or every file when ROOT is not a git checkout
+    try: return subprocess.check_output(['git', 'ls-files'], stderr=subprocess.DEVNULL).decode().split()
+    except (OSError, subprocess.CalledProcessError):
+        return [os.path.relpath(os.path.join(d, f)) for d, _, fs in os.walk('.') for f in fs]
+files = [f for f in listed() if re.match(r'(intrinsic|embedding|refine)/.*\.(h|cpp)$', f)]
 def key(path):  # file path -> (lib/sub) concept
     m = re.match(r'(\w+)/(?:include/conformesh/\w+|src)/(.*)/[^/]+$', path)
     if m: return m.group(1) + '/' + m.group(2)
