@@ -97,7 +97,7 @@ void writeMeshOutputs(const intrinsic::MeshData& data, const std::string& path, 
 }
 
 void addSmoothingOptions(CLI::App* sub, int& passes, std::string& rule, const std::string& note) {
-  sub->add_option("--smoothing", passes, "Smoothing passes after refinement (0: unsmoothed, the paper's)" + note)
+  sub->add_option("--smoothing", passes, "Smoothing passes after refinement (0: none, the paper's)" + note)
       ->capture_default_str();
   sub->add_option("--smoothing-rule", rule, "Start of each vertex's search: odt or centroid")
       ->check(oneOf({"odt", "centroid"}))

@@ -1,6 +1,6 @@
 // embed_command.cpp — `conformesh embed IN -o OUT.ply`: fit vertex positions in R³ to a mesh's edge lengths (Ceres,
-// embedding/isometric_embedding.h) and say whether the fit is isometric. Parsing and printing only; a fit that is not
-// isometric still writes the best positions (nothing is lost) and then exits with status 1 naming the residual.
+// embedding/fit/isometric_embedding.h) and say whether the fit is isometric. Parsing and printing only; a fit that is
+// not isometric still writes the best positions (nothing is lost) and then exits with status 1 naming the residual.
 #include <cstdio>
 #include <memory>
 

@@ -3,8 +3,8 @@
 // lengths.
 //
 // One CLI11 sub-subcommand per surface (icosphere, torus, genus, disk, annulus, flat-torus), each with its own --help;
-// the constructions live in conformesh/intrinsic/mesh_generators.h. This file parses, calls the generator, reports the
-// topology found by HalfedgeMesh (so the printed χ is measured, not assumed) and writes the file with writeMesh().
+// the constructions live in conformesh/intrinsic/mesh/mesh_generators.h. This file parses, calls the generator, reports
+// the topology found by HalfedgeMesh (so the printed χ is measured, not assumed) and writes the file with writeMesh().
 #include <complex>
 #include <iostream>
 #include <memory>
@@ -200,8 +200,8 @@ void registerGenerateCommand(CLI::App& app) {
     finish(intrinsic::makeDisk(o), args->common, "disk", intrinsic::knownAnswers(o));
   });
 
-  CLI::App* annulus = gen->add_subcommand(
-      "annulus", "Annulus r1 < |z| < r2, log-polar grid: chi = 0, two boundary loops, area → π(r2² − r1²)");
+  CLI::App* annulus =
+      gen->add_subcommand("annulus", "Annulus r1 < |z| < r2, log-polar grid: chi = 0, two boundary loops");
   annulus->add_option("--r1", args->annulus.innerRadius, "Inner radius r1 > 0")->capture_default_str();
   annulus->add_option("--r2", args->annulus.outerRadius, "Outer radius r2 > r1")->capture_default_str();
   annulus->add_option("--rings", args->annulus.rings, "Layers of triangles N ≥ 1")->capture_default_str();
@@ -213,7 +213,7 @@ void registerGenerateCommand(CLI::App& app) {
   });
 
   CLI::App* flat = gen->add_subcommand(
-      "flat-torus", "Flat torus C/(ω1Z + ω2Z) as edge lengths only (.ply): chi = 0, curvature 0 at every vertex");
+      "flat-torus", "Flat torus C/(ω1Z + ω2Z), edge lengths only (.ply): chi = 0, curvature 0 everywhere");
   flat->add_option("--omega1", args->omega1, "First period as re,im")
       ->delimiter(',')
       ->expected(2)

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
       "conformesh"};
   app.footer("Run `conformesh <command> --help` for each command.\nDetails: docs/cli.md");
   // One line per option: wide enough for the longest "--name TYPE=DEFAULT" column of any subcommand (they share it).
-  app.get_formatter()->column_width(32);
+  app.get_formatter()->column_width(33);
   app.require_subcommand(1);
   bool quiet = false;
   app.add_flag("-q,--quiet", quiet, "Suppress progress lines on stderr");

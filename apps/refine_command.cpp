@@ -161,7 +161,7 @@ void run(const RefineArgs& args) {
 void registerRefineCommand(CLI::App& app) {
   auto args = std::make_shared<RefineArgs>();
   CLI::App* sub = app.add_subcommand(
-      "refine", "Delaunay refinement of a constant-curvature triangulation, graded by lambda (paper §4.2)");
+      "refine", "Refine a constant-curvature triangulation (Delaunay, graded by lambda; paper §4.2)");
   sub->footer("Example: conformesh refine torus.ply --eps 0.02 -o torus_refined.ply\nDetails: docs/cli.md#refine");
   sub->add_option("input", args->input, "Input mesh (.ply with edge lengths, or .obj/.off/.ply with positions)")
       ->required();

@@ -39,7 +39,8 @@ struct RemeshArgs {
 };
 
 void run(const RemeshArgs& a) {
-  if (isMeshFilePath(a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh.h)
+  if (isMeshFilePath(
+          a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh_input.h)
     return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
                           a.refineIn, a.smoothing, a.smoothingRule, a.segmentRule});
   if (a.refineIn != "uniformized")
@@ -143,7 +144,7 @@ void registerRemeshCommand(CLI::App& app) {
   sub->add_option("--region", a->region, "Regions of the check: ball or union (Theorem 3.4's unions)")
       ->check(oneOf({"ball", "union"}))
       ->capture_default_str();
-  addSmoothingOptions(sub, a->smoothing, a->smoothingRule, "; not for mesh files refined uniformized");
+  addSmoothingOptions(sub, a->smoothing, a->smoothingRule, "; mesh files: input route only");
   sub->add_option("--refine-in", a->refineIn, "Mesh files: refine in the uniformized or the input metric")
       ->check(oneOf({"uniformized", "input"}))
       ->capture_default_str();
