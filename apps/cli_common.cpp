@@ -75,10 +75,7 @@ std::unique_ptr<intrinsic::SmoothMetric> loadMetric(const std::string& command, 
 }
 
 void addFieldOption(CLI::App* sub, std::string& field) {
-  sub->add_option("--field", field,
-                  "Sampled metric field instead of a family: the text format, or HDF5 (datasets g_uu g_uv g_vv of "
-                  "shape (NV, NU), attributes chart, periodic_u, periodic_v, poles; FILE.h5:/group for a group), "
-                  "docs/metrics.md");
+  sub->add_option("--field", field, "Sampled metric field instead of a family: text or HDF5 (FILE.h5:/group)");
 }
 
 void addCurvatureMeasureProperties(intrinsic::MeshData& data, const intrinsic::CurvatureMeasureResult& c) {
@@ -101,16 +98,20 @@ void writeMeshOutputs(const intrinsic::MeshData& data, const std::string& path, 
 }
 
 void addSmoothingOptions(CLI::App* sub, int& passes, std::string& rule, const std::string& note) {
-  sub->add_option("--smoothing", passes,
-                  "Smoothing passes after refinement: each moves every inserted interior vertex within its star to "
-                  "raise its triangles' smallest angles (never lowering the star's smallest angle; input locations "
-                  "re-traced), restores Delaunay and re-runs the refinement, so every bound still holds. " +
-                      note)
+  sub->add_option("--smoothing", passes, "Smoothing passes after refinement (0: none, the paper's)" + note)
       ->capture_default_str();
-  sub->add_option("--smoothing-rule", rule,
-                  "Start of each vertex's search: odt (optimal Delaunay point: area-weighted circumcentres, default) "
-                  "or centroid (area-weighted centroids)")
-      ->check(CLI::IsMember({"odt", "centroid"}));
+  sub->add_option("--smoothing-rule", rule, "Start of each vertex's search: odt or centroid")
+      ->check(oneOf({"odt", "centroid"}))
+      ->capture_default_str();
+}
+
+CLI::Validator untyped(CLI::Validator v) {
+  v.description("");
+  return v;
+}
+
+CLI::Validator oneOf(std::vector<std::string> choices) {
+  return untyped(CLI::IsMember(std::move(choices)));
 }
 
 }  // namespace conformesh::apps

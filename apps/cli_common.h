@@ -11,10 +11,10 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
-#include "conformesh/intrinsic/io/vtk_writer.h"
 
 namespace conformesh::apps {
 
@@ -56,7 +56,14 @@ void writeMeshOutputs(const intrinsic::MeshData& data, const std::string& path, 
                       const std::function<intrinsic::VtkMesh()>& makeVtk, nlohmann::json& report);
 
 // Registers `--smoothing N` and `--smoothing-rule odt|centroid` (RefineOptions::smoothingPasses / smoothingRule) on
-// `sub`, the shared help text followed by `note` (what the command's default is and where it applies).
+// `sub`; `note` ends the --smoothing help line (where it applies), "" for none.
 void addSmoothingOptions(CLI::App* sub, int& passes, std::string& rule, const std::string& note);
+
+// `v` with an empty description. CLI11 appends a validator's description to the option's type column
+// ("INT:INT in [4 - 100000]=48"), which pushes the help text onto a line of its own; the option's text names the
+// range or the choices instead, and the help keeps one line per option. The error messages are CLI11's, unchanged.
+CLI::Validator untyped(CLI::Validator v);
+// untyped(CLI::IsMember(choices)): the option takes one of `choices`.
+CLI::Validator oneOf(std::vector<std::string> choices);
 
 }  // namespace conformesh::apps

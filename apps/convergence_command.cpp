@@ -54,8 +54,8 @@ std::vector<int> parseCounts(const std::string& list) {
   return out;
 }
 
-void run(const ConvergenceArgs& a) {
-  const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetric("convergence", a.family, a.params, a.field);
+// Step 1 (parse): the study's options from the command line.
+refine::ConvergenceOptions studyOptions(const ConvergenceArgs& a) {
   refine::ConvergenceOptions o;
   if (!a.vertices.empty()) {
     o.targetVertices = parseCounts(a.vertices);
@@ -72,10 +72,11 @@ void run(const ConvergenceArgs& a) {
   o.remesh.refinement.smoothingRule = refine::parseSmoothingRule(a.smoothingRule);
   o.progress = [](const std::string& s) { progress(s); };
   o.extrinsic = true;  // used when the metric has an embedding
-  const refine::ConvergenceStudy study = refine::runConvergenceStudy(*metric, o);
+  return o;
+}
 
-  nlohmann::json levels = nlohmann::json::array();
-  const std::string csvPath = a.prefix + ".csv", jsonPath = a.prefix + ".json";
+// Step 3a: PREFIX.csv, one row per level; the extrinsic columns (embedding/) are empty without an embedding.
+void writeCsv(const refine::ConvergenceStudy& study, const std::string& csvPath) {
   std::ofstream csv(csvPath);
   if (!csv) throw InputError(csvPath + ": cannot open for writing");
   csv << "target_vertices,vertices,triangles,eps,max_circumradius,mean_circumradius,min_angle_deg,"
@@ -89,42 +90,52 @@ void run(const ConvergenceArgs& a) {
                   L.measure.meanAbsoluteError, L.measure.maxAbsoluteError, L.measure.fractionWithinBand,
                   L.invertedTriangles, L.totalArea, L.quality.gaussBonnetResidual, L.seconds);
     csv << std::string(row, std::strlen(row) - 1);
-    // The extrinsic columns (embedding/): empty when the metric has no embedding.
     if (study.extrinsic)
       csv << "," << L.meanCurvature.meanAbsoluteError << "," << L.deviation.hausdorffClosest << ","
           << L.deviation.normalDeviation;
     else
       csv << ",,,";
     csv << "\n";
-    levels.push_back({{"target_vertices", L.targetVertices},
-                      {"vertices", L.vertices},
-                      {"triangles", L.triangles},
-                      {"eps", L.epsilon},
-                      {"quality", qualityJson(L.quality)},
-                      {"inverted_triangles", L.invertedTriangles},
-                      {"total_area", L.totalArea},
-                      {"gaussian_curvature_measure", curvatureMeasureJson(L.measure, o.measure)},
-                      {"seconds", L.seconds}});
-    if (study.extrinsic)
-      levels.back()["extrinsic"] = {{"e_H", L.meanCurvature.meanAbsoluteError},
-                                    {"max_abs_error", L.meanCurvature.maxAbsoluteError},
-                                    {"mean_relative_error", L.meanCurvature.meanRelativeError},
-                                    {"fraction_within", L.meanCurvature.fractionWithinBand},
-                                    {"within_band", o.meanCurvature.withinBand},
-                                    {"histogram_range", o.meanCurvature.histogramRange},
-                                    {"histogram", L.meanCurvature.histogram},
-                                    {"radius", L.meanCurvature.radius},
-                                    {"discrete_total", L.meanCurvature.discreteTotal},
-                                    {"smooth_total", L.meanCurvature.smoothTotal},
-                                    {"hausdorff", L.deviation.hausdorffClosest},
-                                    {"hausdorff_natural", L.deviation.hausdorffNatural},
-                                    {"mean_distance", L.deviation.meanClosest},
-                                    {"normal_deviation", L.deviation.normalDeviation},
-                                    {"mean_normal_deviation", L.deviation.meanNormalDeviation},
-                                    {"normal_deviation_natural", L.deviation.normalDeviationNatural},
-                                    {"flipped_faces", L.deviation.flippedFaces}};
   }
-  csv.close();
+}
+
+// One level of the JSON report.
+nlohmann::json levelJson(const refine::ConvergenceLevel& L, bool extrinsic, const refine::ConvergenceOptions& o) {
+  nlohmann::json level = {{"target_vertices", L.targetVertices},
+                          {"vertices", L.vertices},
+                          {"triangles", L.triangles},
+                          {"eps", L.epsilon},
+                          {"quality", qualityJson(L.quality)},
+                          {"inverted_triangles", L.invertedTriangles},
+                          {"total_area", L.totalArea},
+                          {"gaussian_curvature_measure", curvatureMeasureJson(L.measure, o.measure)},
+                          {"seconds", L.seconds}};
+  if (extrinsic)
+    level["extrinsic"] = {{"e_H", L.meanCurvature.meanAbsoluteError},
+                          {"max_abs_error", L.meanCurvature.maxAbsoluteError},
+                          {"mean_relative_error", L.meanCurvature.meanRelativeError},
+                          {"fraction_within", L.meanCurvature.fractionWithinBand},
+                          {"within_band", o.meanCurvature.withinBand},
+                          {"histogram_range", o.meanCurvature.histogramRange},
+                          {"histogram", L.meanCurvature.histogram},
+                          {"radius", L.meanCurvature.radius},
+                          {"discrete_total", L.meanCurvature.discreteTotal},
+                          {"smooth_total", L.meanCurvature.smoothTotal},
+                          {"hausdorff", L.deviation.hausdorffClosest},
+                          {"hausdorff_natural", L.deviation.hausdorffNatural},
+                          {"mean_distance", L.deviation.meanClosest},
+                          {"normal_deviation", L.deviation.normalDeviation},
+                          {"mean_normal_deviation", L.deviation.meanNormalDeviation},
+                          {"normal_deviation_natural", L.deviation.normalDeviationNatural},
+                          {"flipped_faces", L.deviation.flippedFaces}};
+  return level;
+}
+
+// Step 3b: the JSON report (written to PREFIX.json; printed, without the per-vertex errors, with --json).
+nlohmann::json studyJson(const refine::ConvergenceStudy& study, const ConvergenceArgs& a,
+                         const refine::ConvergenceOptions& o) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (const auto& L : study.levels) levels.push_back(levelJson(L, study.extrinsic, o));
   nlohmann::json j = {{"metric", study.metric},
                       {"smooth_area", study.smoothArea},
                       {"t0_vertices", study.t0Vertices},
@@ -143,30 +154,30 @@ void run(const ConvergenceArgs& a) {
     j["orders"]["normal_deviation_vs_mean_circumradius"] = study.orderNormalDeviationVsCircumradius;
     j["finest_mean_curvature_relative_errors"] = study.levels.back().meanCurvature.relativeError;
   }
-  std::ofstream(jsonPath) << j.dump(1) << '\n';
-  std::vector<std::string> written = {csvPath, jsonPath};
-  if (!a.noPlot) {
-    // The installed script, else the source tree's (running from a build folder).
-    const std::string script = std::filesystem::exists(CONFORMESH_INSTALLED_PLOT_SCRIPT)
-                                   ? CONFORMESH_INSTALLED_PLOT_SCRIPT
-                                   : CONFORMESH_SOURCE_PLOT_SCRIPT;
-    // Debian's interpreter, which python3-matplotlib belongs to, ahead of any other python3 on the PATH.
-    const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-    const std::string cmd = python + " '" + script + "' '" + jsonPath + "' '" + a.prefix + "'";
-    if (std::system(cmd.c_str()) != 0)
-      progress("plots skipped: `" + cmd + "` failed (needs python3-matplotlib); the CSV and JSON are written");
-    else
-      for (const char* s : {"_fig10.png", "_fig11.png", "_fig12.png"}) written.push_back(a.prefix + s);
-    if (!a.noPlot && study.extrinsic && std::filesystem::exists(a.prefix + "_fig13.png"))
-      written.push_back(a.prefix + "_fig13.png");
-  }
-  if (a.json) {
-    j.erase("finest_relative_errors");
-    j.erase("finest_mean_curvature_relative_errors");
-    j["written"] = written;
-    printJson(j);
-    return;
-  }
+  return j;
+}
+
+// Step 3c: the PNG plots by scripts/plot_convergence.py; returns the files it wrote (none when python3-matplotlib is
+// missing: then a progress line says so).
+std::vector<std::string> drawPlots(const std::string& jsonPath, const std::string& prefix, bool extrinsic) {
+  std::vector<std::string> written;
+  // The installed script, else the source tree's (running from a build folder).
+  const std::string script = std::filesystem::exists(CONFORMESH_INSTALLED_PLOT_SCRIPT)
+                                 ? CONFORMESH_INSTALLED_PLOT_SCRIPT
+                                 : CONFORMESH_SOURCE_PLOT_SCRIPT;
+  // Debian's interpreter, which python3-matplotlib belongs to, ahead of any other python3 on the PATH.
+  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string cmd = python + " '" + script + "' '" + jsonPath + "' '" + prefix + "'";
+  if (std::system(cmd.c_str()) != 0)
+    progress("plots skipped: `" + cmd + "` failed (needs python3-matplotlib); the CSV and JSON are written");
+  else
+    for (const char* s : {"_fig10.png", "_fig11.png", "_fig12.png"}) written.push_back(prefix + s);
+  if (extrinsic && std::filesystem::exists(prefix + "_fig13.png")) written.push_back(prefix + "_fig13.png");
+  return written;
+}
+
+// Step 4 (print): the text table, the fitted orders and the files written.
+void printStudy(const refine::ConvergenceStudy& study, const std::vector<std::string>& written) {
   std::printf("%s: %zu meshes, T0 of %d vertices\n", study.metric.c_str(), study.levels.size(), study.t0Vertices);
   std::printf("%9s %9s %11s %11s %9s %9s %11s %8s %7s\n", "vertices", "triangles", "max R", "mean R", "min ang",
               "mean min", "e_G", "within", "sec");
@@ -191,40 +202,51 @@ void run(const ConvergenceArgs& a) {
   for (const auto& w : written) std::printf("written: %s\n", w.c_str());
 }
 
+// parse → compute (refine::runConvergenceStudy) → write CSV, JSON, plots → print.
+void run(const ConvergenceArgs& a) {
+  const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetric("convergence", a.family, a.params, a.field);
+  const refine::ConvergenceOptions o = studyOptions(a);
+  const refine::ConvergenceStudy study = refine::runConvergenceStudy(*metric, o);
+
+  const std::string csvPath = a.prefix + ".csv", jsonPath = a.prefix + ".json";
+  writeCsv(study, csvPath);
+  nlohmann::json j = studyJson(study, a, o);
+  std::ofstream(jsonPath) << j.dump(1) << '\n';
+  std::vector<std::string> written = {csvPath, jsonPath};
+  if (!a.noPlot)
+    for (const std::string& w : drawPlots(jsonPath, a.prefix, study.extrinsic)) written.push_back(w);
+  if (a.json) {
+    j.erase("finest_relative_errors");
+    j.erase("finest_mean_curvature_relative_errors");
+    j["written"] = written;
+    printJson(j);
+    return;
+  }
+  printStudy(study, written);
+}
+
 }  // namespace
 
 void registerConvergenceCommand(CLI::App& app) {
   auto a = std::make_shared<ConvergenceArgs>();
-  CLI::App* sub = app.add_subcommand("convergence", "Measure curvature convergence over a sweep of meshes (paper §6)");
+  CLI::App* sub = app.add_subcommand(
+      "convergence", "Measure curvature convergence over a sweep of meshes (paper §6, Table 2, Figs. 10-13)");
   sub->footer(
-      "Remeshes one uniformization of the metric at a sequence of eps chosen to hit the target vertex counts\n"
-      "(default: the paper's Table 2, 1021 ... 21876), and for each mesh measures, in the original metric: largest\n"
-      "and mean circumradius, smallest angle, mean per-triangle smallest angle, and e_G, the mean over vertices of\n"
-      "|sum of angle deficits - integral of K dA| over geodesic balls of radius 0.05*sqrt(area) (paper eq. 5).\n"
-      "Fits, by least squares on logs: e_G against mean circumradius (Theorem 3.4: order >= 1), mean circumradius\n"
-      "against vertices (-1/2, paper Fig. 10b), area error against mean circumradius (2).\n"
-      "Writes PREFIX.csv, PREFIX.json and, with python3-matplotlib, PREFIX_fig10.png (a-d), PREFIX_fig11.png (a, c)\n"
-      "and PREFIX_fig12.png (histogram of relative errors on the finest mesh).\n"
-      "When the metric has an embedding in R^3 (sphere, ellipsoid, torus, graphs, patches), also: e_H, the mean\n"
-      "|sum_e |e in B| beta(e) - integral of (k1 + k2) dA| over balls B(v, 0.08*sqrt(area)) (paper eq. 2), the\n"
-      "Hausdorff distance max |q - pi(q)| and the largest normal deviation (radians) between mesh and surface, with\n"
-      "their orders against mean circumradius (>= 1, 2, 1: Theorem 3.4, Lemma 4.9) and PREFIX_fig13.png.\n"
-      "Example: conformesh convergence kerr-newman --param a=0.95 --vertices 1k,2k,4k,8k -o kerr95");
+      "Example: conformesh convergence kerr-newman --param a=0.95 --vertices 1k,2k,4k,8k -o kerr95\n"
+      "Details: docs/cli.md#convergence");
   sub->add_option("family", a->family, "Metric family (see `conformesh discretize --list`)");
   addFieldOption(sub, a->field);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
-  sub->add_option("--vertices", a->vertices, "Target vertex counts, e.g. 1k,2k,4k,8k");
+  sub->add_option("--vertices", a->vertices, "Target vertex counts, e.g. 1k,2k,4k,8k (default: the paper's Table 2)");
   sub->add_option("--levels", a->levels, "Use the first N counts of the paper's Table 2 (2..11)");
-  sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (default sqrt(2))");
-  sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of T0, shared by all meshes (default 10)");
-  sub->add_option("--disk-target", a->diskTarget,
-                  "Disk charts: 'circle' maps to the unit disk; 'keep-boundary' flattens keeping the boundary lengths "
-                  "(corners keep their angles); 'auto' (default) keeps the boundary of rectangle charts")
-      ->check(CLI::IsMember({"auto", "circle", "keep-boundary"}));
-  addSmoothingOptions(sub, a->smoothing, a->smoothingRule,
-                      "Applied at every level; raises the mean smallest angle (docs/studies.md). 0 = the paper's "
-                      "unsmoothed refinement");
-  sub->add_option("-o,--output", a->prefix, "Prefix of the files written (default: convergence)");
+  sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (sqrt 2: 20.7 deg)")
+      ->capture_default_str();
+  sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of T0, shared by all meshes")->capture_default_str();
+  sub->add_option("--disk-target", a->diskTarget, "Disk charts: auto, circle (unit disk) or keep-boundary")
+      ->check(oneOf({"auto", "circle", "keep-boundary"}))
+      ->capture_default_str();
+  addSmoothingOptions(sub, a->smoothing, a->smoothingRule, "; at every level");
+  sub->add_option("-o,--output", a->prefix, "Prefix of the files written")->capture_default_str();
   sub->add_flag("--json", a->json, "Print the table and orders as JSON");
   sub->add_flag("--no-plot", a->noPlot, "Do not draw the PNG plots");
   sub->callback([a] { run(*a); });

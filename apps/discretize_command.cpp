@@ -17,9 +17,9 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
 #include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
@@ -127,31 +127,17 @@ void registerDiscretizeCommand(CLI::App& app) {
   auto args = std::make_shared<DiscretizeArgs>();
   CLI::App* sub = app.add_subcommand("discretize", "Discretize a smooth metric into T0, the initial triangulation");
   sub->footer(
-      "T0 is a well-shaped triangulation of the metric's chart whose edge lengths are metric\n"
-      "lengths (the exact geodesic distance where the family knows it: sphere, ellipsoid via GeographicLib's\n"
-      "GeodesicExact, spherical cap, hyperbolic disk; otherwise the length of the edge's chart curve by adaptive\n"
-      "Gauss-Legendre). Spheres are icosahedral (no pole fans), disks hexagonal rings, tori glued periodic grids.\n"
-      "The PLY carries faces, edges with lengths, vertex properties u, v (chart coordinates), positions when the\n"
-      "family has an embedding, and comments naming the metric.\n"
-      "The summary compares T0 with the smooth surface: T0's area converges to the smooth area at O(h^2); the angle\n"
-      "deficits plus boundary turning of T0 equal 2 pi chi exactly (Gauss-Bonnet residual ~ round-off), which for a\n"
-      "closed surface is also the smooth int K dA (with a boundary, int K dA = 2 pi chi minus the boundary's total\n"
-      "geodesic curvature); angles are T0's corner angles (well-shaped: bounded away from 0 and 180).\n"
-      "Examples:\n"
-      "  conformesh discretize --list\n"
-      "  conformesh discretize kerr-newman --param a=1 --resolution 16 -o kerr.ply\n"
-      "  conformesh discretize ellipsoid --param f=0.9 --resolution 12 -o ellipsoid.ply\n"
-      "  conformesh discretize --field horizon.txt --resolution 16 -o horizon.ply   (format: docs/metrics.md)");
+      "Example: conformesh discretize kerr-newman --param a=1 --resolution 16 -o kerr.ply\n"
+      "Details: docs/cli.md#discretize");
   sub->add_option("family", args->family, "Metric family name (see --list)");
   sub->add_option("--param", args->params, "Family parameter KEY=VALUE (repeatable), e.g. --param a=0.9");
   addFieldOption(sub, args->field);
   sub->add_option("-r,--resolution", args->resolution,
-                  "Sphere: icosahedral frequency N (10N^2+2 vertices); disk: N rings; grid: N cells across v")
+                  "Sphere: frequency N (10N^2+2 vertices); disk: rings; grid: cells")
       ->capture_default_str();
   sub->add_option("-o,--output", args->output, "Output PLY file");
   sub->add_flag("--list", args->list, "List the families, their parameters, defaults and meaning");
-  sub->add_flag("--chart-lengths", args->chartLengths,
-                "Use chart-curve lengths even where exact geodesic distances are known (for convergence studies)");
+  sub->add_flag("--chart-lengths", args->chartLengths, "Chart-curve lengths even where exact geodesics are known");
   sub->add_flag("--ascii", args->ascii, "Write ASCII PLY (default binary little-endian)");
   sub->add_flag("--json", args->json, "Print the summary (or the --list) as JSON");
   sub->callback([args] { run(*args); });

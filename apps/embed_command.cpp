@@ -1,6 +1,6 @@
 // embed_command.cpp — `conformesh embed IN -o OUT.ply`: fit vertex positions in R³ to a mesh's edge lengths (Ceres,
-// embedding/isometric_embedding.h) and say whether the fit is isometric. Parsing and printing only; a fit that is not
-// isometric still writes the best positions (nothing is lost) and then exits with status 1 naming the residual.
+// embedding/fit/isometric_embedding.h) and say whether the fit is isometric. Parsing and printing only; a fit that is
+// not isometric still writes the best positions (nothing is lost) and then exits with status 1 naming the residual.
 #include <cstdio>
 #include <memory>
 
@@ -111,36 +111,27 @@ void runEmbed(const EmbedOptions& o) {
 
 void registerEmbedCommand(CLI::App& app) {
   auto o = std::make_shared<EmbedOptions>();
-  CLI::App* sub = app.add_subcommand("embed", "Fit vertex positions in R^3 to a mesh's edge lengths (isometric fit)");
+  CLI::App* sub = app.add_subcommand(
+      "embed", "Fit vertex positions in R^3 to a mesh's edge lengths; say whether the fit is isometric");
   sub->footer(
-      "Finds positions x_i in R^3 whose straight edges have the mesh's lengths: Levenberg-Marquardt (Ceres) on the\n"
-      "relative residuals (|x_i - x_j| - l_ij) / l_ij, from a landmark-MDS start (or --init), first with a small\n"
-      "dihedral-smoothness regularizer that keeps the fit from folding, then without it. Reports:\n"
-      "  max / RMS relative residual  over the edges, after the final solve; a mesh of a surface that sits in R^3\n"
-      "                               (ellipsoid, Kerr horizon with a/M < sqrt(3)/2) fits to round-off, 1e-15\n"
-      "  verdict                      'isometric to tolerance T' when the max residual is <= T (default 1e-8,\n"
-      "                               far above round-off and far below any residual a non-realizable length set\n"
-      "                               leaves), else 'not isometric: residual R cannot be removed' and exit status 1\n"
-      "                               (the Kerr horizon at a/M > sqrt(3)/2 has negative curvature at its poles\n"
-      "                               and no isometric embedding in R^3, Smarr 1973)\n"
-      "The output PLY keeps the input's edge lengths and vertex properties, adds the positions and the per-edge\n"
-      "property relative_residual; it is written even when the fit is not isometric. docs/embedding.md explains.\n"
-      "Example: conformesh remesh ellipsoid --eps 0.1 -o e.ply && conformesh embed e.ply -o fit.ply");
+      "Example: conformesh remesh ellipsoid --eps 0.1 -o e.ply && conformesh embed e.ply -o fit.ply\n"
+      "Details: docs/cli.md#embed");
   sub->add_option("input", o->input, "Mesh with edge lengths (.ply with an edge element, or positions)")->required();
   sub->add_option("-o,--output", o->output, "Write the fitted mesh here (.ply keeps lengths and residuals)");
   sub->add_option("--init", o->init, "Start from the vertex positions of this file (same vertices as the input)");
-  sub->add_option("--tolerance", o->tolerance, "Largest relative edge residual accepted as isometric")
+  sub->add_option("--tolerance", o->tolerance, "Largest relative edge residual accepted as isometric (> 0)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  sub->add_option("--regularizer", o->regularizer, "Weight of the dihedral regularizer in the first solve (0: skip)")
+      ->check(untyped(CLI::PositiveNumber));
+  sub->add_option("--regularizer", o->regularizer,
+                  "Weight of the dihedral regularizer in the first solve (>= 0; 0: skip)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
-  sub->add_option("--landmarks", o->landmarks, "Landmarks of the MDS start")
+      ->check(untyped(CLI::NonNegativeNumber));
+  sub->add_option("--landmarks", o->landmarks, "Landmarks of the MDS start (4..100000)")
       ->capture_default_str()
-      ->check(CLI::Range(4, 100000));
-  sub->add_option("--max-iterations", o->maxIterations, "LM iterations of the final solve")
+      ->check(untyped(CLI::Range(4, 100000)));
+  sub->add_option("--max-iterations", o->maxIterations, "LM iterations of the final solve (1..100000)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
+      ->check(untyped(CLI::Range(1, 100000)));
   sub->add_flag("--json", o->json, "Print the report as JSON");
   sub->callback([o] { runEmbed(*o); });
 }

@@ -3,8 +3,8 @@
 // lengths.
 //
 // One CLI11 sub-subcommand per surface (icosphere, torus, genus, disk, annulus, flat-torus), each with its own --help;
-// the constructions live in conformesh/intrinsic/mesh_generators.h. This file parses, calls the generator, reports the
-// topology found by HalfedgeMesh (so the printed χ is measured, not assumed) and writes the file with writeMesh().
+// the constructions live in conformesh/intrinsic/mesh/mesh_generators.h. This file parses, calls the generator, reports
+// the topology found by HalfedgeMesh (so the printed χ is measured, not assumed) and writes the file with writeMesh().
 #include <complex>
 #include <iostream>
 #include <memory>
@@ -18,9 +18,9 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/mesh/halfedge_mesh.h"
 #include "conformesh/intrinsic/mesh/mesh_generators.h"
-#include "conformesh/intrinsic/io/mesh_io.h"
 
 namespace conformesh::apps {
 
@@ -53,13 +53,11 @@ struct GenerateArgs {
 void addCommonOptions(CLI::App* sub, CommonArgs& args) {
   sub->add_option("-o,--output", args.output, "Output mesh file: .ply, .obj or .off (metric-only meshes need .ply)")
       ->required();
-  sub->add_option("--perturb", args.perturb,
-                  "Multiply every edge length by (1 + AMP·t), t uniform in (-1,1), then shrink the perturbation of "
-                  "edges of any triangle that would violate its triangle inequality (margin: relative slack ≥ 1e-3). "
-                  "The result is a piecewise-flat cone metric with no isometric embedding in general; it is stored as "
-                  "edge lengths, so the output must be .ply. AMP in [0,1)")
-      ->check(CLI::Range(0.0, 1.0));
-  sub->add_option("--seed", args.seed, "Seed of the std::mt19937 drawing the perturbation (same seed, same metric)");
+  sub->add_option("--perturb", args.perturb, "Edge lengths times (1 + AMP·t), t uniform in (-1,1), AMP in [0,1); .ply")
+      ->capture_default_str()
+      ->check(untyped(CLI::Range(0.0, 1.0)));
+  sub->add_option("--seed", args.seed, "Seed of the std::mt19937 drawing the perturbation (same seed, same metric)")
+      ->capture_default_str();
   sub->add_flag("--json", args.json, "Print the summary (counts, topology, known answers) as JSON on stdout");
   sub->add_flag("--ascii", args.ascii, "Write ASCII PLY instead of binary little-endian PLY");
 }
@@ -145,101 +143,77 @@ std::complex<double> toComplex(const std::vector<double>& v) {
 
 void registerGenerateCommand(CLI::App& app) {
   auto args = std::make_shared<GenerateArgs>();
-  CLI::App* gen = app.add_subcommand("generate", "Write a test surface with known answers (sphere, torus, genus g, ...)");
+  CLI::App* gen =
+      app.add_subcommand("generate", "Write a test surface with known answers (sphere, torus, genus g, ...)");
   gen->footer(
-      "Each surface is a subcommand with its own --help. For every surface the summary reports the measured V, E, F,\n"
-      "Euler characteristic χ = V − E + F, genus and number of boundary loops, next to the known χ, the total\n"
-      "Gaussian curvature 2πχ (Gauss–Bonnet: angle deficits plus boundary turning must add up to it to round-off)\n"
-      "and the smooth surface's area that the mesh area converges to (order 2 in the edge length).\n"
-      "  icosphere   sphere, χ=2, genus 0, no boundary, area → 4πR²\n"
-      "  torus       torus of revolution, χ=0, genus 1, area → 4π²Rr\n"
-      "  genus       boundary of a slab with g square holes, χ=2−2g, genus g, exact area, curvature ±π/2 at corners\n"
-      "  disk        unit disk in rings, χ=1, one boundary loop, area → πR²\n"
-      "  annulus     r1 < |z| < r2, χ=0, two boundary loops, area → π(r2²−r1²)\n"
-      "  flat-torus  C/(ω1Z+ω2Z) as edge lengths only (PLY), χ=0, genus 1, curvature 0 at every vertex\n"
-      "Example: conformesh generate torus --R 1 --r 0.4 --n 60 --m 24 -o torus.ply");
+      "Each surface has its own --help; the summary shows the measured V, E, F, chi, genus, boundary loops next to "
+      "the\n"
+      "known ones, the total curvature 2 pi chi and the smooth area.\n"
+      "Example: conformesh generate torus --R 1 --r 0.4 --n 60 --m 24 -o torus.ply\n"
+      "Details: docs/cli.md#generate");
   gen->require_subcommand(1);
 
-  CLI::App* ico = gen->add_subcommand(
-      "icosphere",
-      "Icosahedron subdivided L times (each triangle split in four at its edge midpoints, midpoints pushed onto the\n"
-      "sphere). Counts: V = 10·4^L + 2, E = 30·4^L, F = 20·4^L; χ = 2, genus 0, no boundary; total curvature 4π;\n"
-      "area → 4πR² from below with error O(h²). Level 8 has 1,310,720 faces.");
+  CLI::App* ico =
+      gen->add_subcommand("icosphere", "Icosahedron subdivided L times, vertices on the sphere: chi = 2, area → 4πR²");
   ico->add_option("--level", args->icosphere.level, "Subdivision level L (0..12)")->capture_default_str();
   ico->add_option("--radius", args->icosphere.radius, "Sphere radius R")->capture_default_str();
   addCommonOptions(ico, args->common);
+  ico->footer("Details: docs/cli.md#generate");
   ico->callback([args] {
     const auto& o = args->icosphere;
     finish(intrinsic::makeIcosphere(o), args->common, "icosphere", intrinsic::knownAnswers(o));
   });
 
-  CLI::App* torus = gen->add_subcommand(
-      "torus",
-      "Torus of revolution ((R + r cos v) cos u, (R + r cos v) sin u, r sin v) sampled on an n×m periodic grid, each\n"
-      "quad split along one diagonal. Counts: V = nm, E = 3nm, F = 2nm; χ = 0, genus 1; total curvature 0 (positive\n"
-      "outside, negative inside); area → 4π²Rr with error O(h²). Well-shaped when n/m ≈ R/r.");
+  CLI::App* torus = gen->add_subcommand("torus", "Torus of revolution on an n×m periodic grid: chi = 0, area → 4π²Rr");
   torus->add_option("--R", args->torus.majorRadius, "Major radius R (axis to tube centre)")->capture_default_str();
   torus->add_option("--r", args->torus.minorRadius, "Minor (tube) radius r, 0 < r < R")->capture_default_str();
   torus->add_option("--n", args->torus.n, "Vertices around the axis (≥ 3)")->capture_default_str();
   torus->add_option("--m", args->torus.m, "Vertices around the tube (≥ 3)")->capture_default_str();
   torus->add_flag("--alternate", args->torus.alternateDiagonals,
-                  "Checkerboard of the two quad diagonals (n and m even) instead of one consistent diagonal");
+                  "Checkerboard of the two quad diagonals (n, m even) instead of one diagonal");
   addCommonOptions(torus, args->common);
+  torus->footer("Details: docs/cli.md#generate");
   torus->callback([args] {
     const auto& o = args->torus;
     finish(intrinsic::makeTorus(o), args->common, "torus", intrinsic::knownAnswers(o));
   });
 
-  CLI::App* genus = gen->add_subcommand(
-      "genus",
-      "Closed orientable surface of genus g: the boundary of the slab D × [0,1], D = [0,2g+1] × [0,3] minus g unit\n"
-      "squares (cells of side --cell). Top, bottom and walls are grids of N×N squares per cell, all triangles right\n"
-      "isosceles. χ = 2 − 2g, no boundary; curvature +π/2 at the 8 outer corners, −π/2 at the 8g hole corners, 0\n"
-      "elsewhere (Σ = 2πχ); area = cell²·(2(3W−g) + 2(W+3) + 4g) exactly, W = 2g+1. g = 2, N = 100 has 10^6 faces.");
+  CLI::App* genus = gen->add_subcommand("genus", "Boundary of a slab with g square holes: chi = 2 − 2g, exact area");
   genus->add_option("--g", args->genus.genus, "Genus g ≥ 0")->capture_default_str();
   genus->add_option("--resolution", args->genus.resolution, "Grid squares per cell side N ≥ 1")->capture_default_str();
   genus->add_option("--cell", args->genus.cellSize, "Side of one cell")->capture_default_str();
   addCommonOptions(genus, args->common);
+  genus->footer("Details: docs/cli.md#generate");
   genus->callback([args] {
     const auto& o = args->genus;
     finish(intrinsic::makeGenusSurface(o), args->common, "genus", intrinsic::knownAnswers(o));
   });
 
-  CLI::App* disk = gen->add_subcommand(
-      "disk",
-      "Disk of radius R: a centre vertex and N rings of radii kR/N carrying 6k vertices, stitched in angular order\n"
-      "(the hexagonal lattice bent onto circles). V = 3N(N+1)+1, E = 9N²+3N, F = 6N²; χ = 1, one boundary loop;\n"
-      "curvature 0 inside, boundary turning Σ = 2π; area = 3N·R²·sin(π/(3N)) → πR², error O(N⁻²).");
+  CLI::App* disk =
+      gen->add_subcommand("disk", "Disk of radius R in N hexagonal rings: chi = 1, one boundary loop, area → πR²");
   disk->add_option("--rings", args->disk.rings, "Number of rings N ≥ 1")->capture_default_str();
   disk->add_option("--radius", args->disk.radius, "Disk radius R")->capture_default_str();
   addCommonOptions(disk, args->common);
+  disk->footer("Details: docs/cli.md#generate");
   disk->callback([args] {
     const auto& o = args->disk;
     finish(intrinsic::makeDisk(o), args->common, "disk", intrinsic::knownAnswers(o));
   });
 
-  CLI::App* annulus = gen->add_subcommand(
-      "annulus",
-      "Annulus r1 < |z| < r2 on a log-polar grid: N+1 rings of radii r1·(r2/r1)^(k/N), each with\n"
-      "n = max(3, round(2πN/ln(r2/r1))) vertices, so cells are conformal squares at any r2/r1. V = n(N+1),\n"
-      "E = 3nN + n, F = 2nN; χ = 0, two boundary loops (turning +2π outside, −2π inside); area → π(r2² − r1²).");
+  CLI::App* annulus =
+      gen->add_subcommand("annulus", "Annulus r1 < |z| < r2, log-polar grid: chi = 0, two boundary loops");
   annulus->add_option("--r1", args->annulus.innerRadius, "Inner radius r1 > 0")->capture_default_str();
   annulus->add_option("--r2", args->annulus.outerRadius, "Outer radius r2 > r1")->capture_default_str();
   annulus->add_option("--rings", args->annulus.rings, "Layers of triangles N ≥ 1")->capture_default_str();
   addCommonOptions(annulus, args->common);
+  annulus->footer("Details: docs/cli.md#generate");
   annulus->callback([args] {
     const auto& o = args->annulus;
     finish(intrinsic::makeAnnulus(o), args->common, "annulus", intrinsic::knownAnswers(o));
   });
 
   CLI::App* flat = gen->add_subcommand(
-      "flat-torus",
-      "Flat torus C/(ω1Z + ω2Z) as a metric-only mesh (edge lengths, no positions; write .ply): an n×n grid of the\n"
-      "period parallelogram (of the reduced basis |ω1| ≤ |ω2| ≤ |ω2 ± ω1| of the same lattice, unless --keep-basis),\n"
-      "cells split along their shorter diagonal, so all triangles are non-obtuse (Delaunay). V = n², E = 3n²,\n"
-      "F = 2n²; χ = 0, genus 1; every vertex has angle sum exactly 2π (curvature 0); area = |Im(conj(ω1)·ω2)|.\n"
-      "n = 1 and 2 give Δ-complexes (self-loops, multi-edges) stored with per-corner edge ids. A constant-curvature\n"
-      "test input.");
+      "flat-torus", "Flat torus C/(ω1Z + ω2Z), edge lengths only (.ply): chi = 0, curvature 0 everywhere");
   flat->add_option("--omega1", args->omega1, "First period as re,im")
       ->delimiter(',')
       ->expected(2)
@@ -250,9 +224,9 @@ void registerGenerateCommand(CLI::App& app) {
       ->capture_default_str();
   flat->add_option("--n", args->flatTorus.n, "Grid size n ≥ 1")->capture_default_str();
   flat->add_flag("--keep-basis", args->keepBasis,
-                 "Grid along the given periods instead of the Lagrange–Gauss reduced basis of the same lattice (same "
-                 "vertices; the triangles may then be obtuse and the triangulation not Delaunay)");
+                 "Grid along the given periods, not the reduced basis (triangles may be obtuse)");
   addCommonOptions(flat, args->common);
+  flat->footer("Details: docs/cli.md#generate");
   flat->callback([args] {
     auto o = args->flatTorus;
     o.omega1 = toComplex(args->omega1);

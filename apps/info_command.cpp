@@ -7,8 +7,8 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "conformesh/intrinsic/mesh/intrinsic_flips.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/mesh/intrinsic_flips.h"
 #include "conformesh/intrinsic/mesh/mesh_summary.h"
 
 namespace conformesh::apps {
@@ -21,7 +21,9 @@ struct InfoOptions {
   std::string delaunayOutput;
 };
 
-double degrees(double radians) { return radians * 180.0 / M_PI; }
+double degrees(double radians) {
+  return radians * 180.0 / M_PI;
+}
 
 nlohmann::json toJson(const intrinsic::MeshSummary& s, const intrinsic::ConversionReport& conv) {
   nlohmann::json comps = nlohmann::json::array();
@@ -77,13 +79,12 @@ void printText(const std::string& path, const intrinsic::MeshSummary& s, const i
   line("total curvature", num(s.curvature.interiorDeficit + s.curvature.boundaryTurning) + "  (deficits " +
                               num(s.curvature.interiorDeficit) + ", boundary turning " +
                               num(s.curvature.boundaryTurning) + ")");
-  if (s.background != intrinsic::Background::Euclidean)
-    line("background K * area", num(s.curvature.backgroundTerm));
+  if (s.background != intrinsic::Background::Euclidean) line("background K * area", num(s.curvature.backgroundTerm));
   line("Gauss-Bonnet residual", num(s.curvature.gaussBonnetResidual));
   line("corner angles (deg)", num(degrees(s.minCornerAngle)) + " .. " + num(degrees(s.maxCornerAngle)));
   line("edge lengths", num(s.minEdgeLength) + " .. " + num(s.maxEdgeLength));
-  line("non-Delaunay edges", std::to_string(s.nonDelaunayEdges) + " (" + num(100 * s.nonDelaunayFraction) +
-                                 " % of interior edges)");
+  line("non-Delaunay edges",
+       std::to_string(s.nonDelaunayEdges) + " (" + num(100 * s.nonDelaunayFraction) + " % of interior edges)");
   if (conv.build.reorientedFaces > 0) line("reoriented faces", std::to_string(conv.build.reorientedFaces));
   if (conv.unreferencedVerticesRemoved > 0)
     line("unreferenced vertices", std::to_string(conv.unreferencedVerticesRemoved) + " (ignored)");
@@ -102,34 +103,26 @@ void runInfo(const InfoOptions& o) {
     const intrinsic::DelaunayReport r = intrinsic::makeDelaunay(tri);
     intrinsic::writeMesh(intrinsic::fromTriangulation(tri), o.delaunayOutput);
     j["delaunay"] = {{"output", o.delaunayOutput}, {"flips", r.flips}};
-    if (!o.json) std::printf("  %-28s %lld flips, written to %s\n", "intrinsic Delaunay", (long long)r.flips,
-                             o.delaunayOutput.c_str());
+    if (!o.json)
+      std::printf("  %-28s %lld flips, written to %s\n", "intrinsic Delaunay", (long long)r.flips,
+                  o.delaunayOutput.c_str());
   }
-  if (o.json) printJson(j);
-  else printText(o.input, s, conv);
+  if (o.json)
+    printJson(j);
+  else
+    printText(o.input, s, conv);
 }
 
 }  // namespace
 
 void registerInfoCommand(CLI::App& app) {
   auto o = std::make_shared<InfoOptions>();
-  CLI::App* sub = app.add_subcommand("info", "Report the intrinsic geometry and topology of a mesh");
-  sub->footer(
-      "Reads OBJ, OFF or PLY (lengths from the PLY edge element when present, otherwise from positions) and\n"
-      "reports:\n"
-      "  vertices / edges / faces   after removing vertices that no face uses\n"
-      "  components, boundary loops, Euler characteristic chi = V - E + F, genus g from chi = 2 - 2g - b\n"
-      "  total curvature            sum of angle deficits 2pi - sum(theta) at interior vertices plus boundary\n"
-      "                             turning angles pi - sum(theta); equals 2pi*chi (minus K*area in a curved\n"
-      "                             background, `comment geometry spherical|hyperbolic` in PLY)\n"
-      "  Gauss-Bonnet residual      that balance's defect: round-off (1e-12 relative) for any valid mesh\n"
-      "  corner angles, edge lengths  ranges over the mesh\n"
-      "  non-Delaunay edges         interior edges whose opposite angles sum past pi (intrinsically)\n"
-      "Example: conformesh info bunny.ply --json");
+  CLI::App* sub = app.add_subcommand(
+      "info", "Report a mesh's topology, curvature, Gauss-Bonnet residual, angles and Delaunay-ness");
+  sub->footer("Example: conformesh info bunny.ply --json\nDetails: docs/cli.md#info");
   sub->add_option("file", o->input, "Mesh file (.obj, .off, .ply)")->required();
   sub->add_flag("--json", o->json, "Print the report as JSON");
-  sub->add_option("--delaunay", o->delaunayOutput,
-                  "Also flip to the intrinsic Delaunay triangulation and write it (PLY with edge lengths)");
+  sub->add_option("--delaunay", o->delaunayOutput, "Also write the intrinsic Delaunay triangulation here (PLY)");
   sub->callback([o] { runInfo(*o); });
 }
 

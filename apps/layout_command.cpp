@@ -2,6 +2,7 @@
 // canonical domain (disk or circle domain, sphere, flat torus with its periods and modulus, Poincaré disk with its
 // deck group), as a picture (SVG; PNG through scripts/plot_layout.py and matplotlib) or as a PLY with per-corner
 // domain coordinates. The geometry is in conformesh_embedding (docs/layout.md); this file parses and prints.
+#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -74,103 +75,105 @@ void writePng(const LayoutDrawing& d, const std::string& path, int pixels) {
     throw InputError("layout: `" + cmd + "` failed (PNG output needs python3-matplotlib); write .svg instead");
 }
 
-void runLayout(const LayoutCommandOptions& o) {
-  const std::string ext = extensionOf(o.output);
-  if (ext != ".svg" && ext != ".png" && ext != ".ply")
-    throw InputError("layout: output " + o.output + " must end in .svg, .png or .ply, found '" + ext + "'");
-  progress("reading " + o.input);
-  const intrinsic::IntrinsicTriangulation input = intrinsic::toTriangulation(loadMesh(o.input));
-  intrinsic::UniformizationOptions uo;
-  uo.flow.tolerance = o.tolerance;
-  uo.progress = [](const std::string& line) { progress(line); };
-  const intrinsic::Uniformization u = intrinsic::uniformize(input, uo);
-  const intrinsic::IntrinsicTriangulation& tri = u.uniform;
-  PictureOptions po;
-  po.tileDepth = o.tiles;
-
-  nlohmann::json j = {{"input", o.input},
-                      {"output", o.output},
-                      {"target", intrinsic::toString(u.report.target)},
-                      {"genus", u.report.genus},
-                      {"boundary_loops", u.report.boundaryLoops},
-                      {"flow_residual", u.report.maxResidual}};
+// What a layout produces for the output: the picture, the per-corner domain coordinates, the JSON report and the
+// human-readable summary lines.
+struct LayoutOutcome {
   LayoutDrawing drawing;
   CornerLayout corners;
-  std::vector<std::string> lines;  // human-readable summary
+  nlohmann::json json;
+  std::vector<std::string> lines;
+};
+
+std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+std::string format(const char* fmt, ...) {
   char buf[256];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, args);
+  va_end(args);
+  return buf;
+}
+
+void layOutTorus(const intrinsic::IntrinsicTriangulation& tri, const PictureOptions& po, LayoutOutcome& out) {
+  const TorusLayout t = layoutTorus(tri);
+  out.drawing = drawTorus(tri, t, po);
+  out.corners = cornerLayout(tri, t.domain);
+  out.json["omega1"] = complexJson(t.omega1);
+  out.json["omega2"] = complexJson(t.omega2);
+  out.json["reduced_omega1"] = complexJson(t.reducedOmega1);
+  out.json["reduced_omega2"] = complexJson(t.reducedOmega2);
+  out.json["tau"] = complexJson(t.tau);
+  out.json["relation_residual"] = t.domain.relationResidual;
+  out.lines.push_back(format("periods (area 1)   omega1 = %.12g %+.12gi, omega2 = %.12g %+.12gi",
+                             t.reducedOmega1.real(), t.reducedOmega1.imag(), t.reducedOmega2.real(),
+                             t.reducedOmega2.imag()));
+  out.lines.push_back(format("modulus tau        %.12g %+.12gi (|Re| <= 1/2, |tau| >= 1)", t.tau.real(), t.tau.imag()));
+}
+
+void layOutHyperbolic(const intrinsic::IntrinsicTriangulation& tri, const PictureOptions& po, LayoutOutcome& out) {
+  const HyperbolicLayout h = layoutHyperbolic(tri);
+  out.drawing = drawHyperbolic(tri, h, po);
+  out.corners = cornerLayout(tri, h.domain);
+  nlohmann::json gens = nlohmann::json::array();
+  for (const auto& g : h.generators)
+    gens.push_back({{"a", complexJson(g.matrix(0, 0))},
+                    {"b", complexJson(g.matrix(0, 1))},
+                    {"translation_length", g.translationLength}});
+  out.json["generators"] = gens;
+  out.json["relation"] = h.relation;
+  out.json["relation_residual"] = h.relationResidual;
+  out.json["max_vertex_residual"] = h.domain.maxVertexResidual;
+  for (std::size_t i = 0; i < h.generators.size(); ++i) {
+    const Mobius& m = h.generators[i].matrix;
+    out.lines.push_back(format("g%-2zu a = %.10g %+.10gi, b = %.10g %+.10gi, length %.8g", i + 1, m(0, 0).real(),
+                               m(0, 0).imag(), m(0, 1).real(), m(0, 1).imag(), h.generators[i].translationLength));
+  }
+  out.lines.push_back("relation           " + h.relation + " = 1");
+  out.lines.push_back(format("relation residual  %.3g (max-entry distance from +-I in SU(1,1))", h.relationResidual));
+}
+
+void layOutSphere(const intrinsic::Uniformization& u, const intrinsic::IntrinsicTriangulation& input,
+                  const LayoutCommandOptions& o, LayoutOutcome& out) {
+  SphereLayoutOptions so;
+  so.centreVertex = o.centreVertex;
+  so.directionVertex = o.directionVertex;
+  const SphereLayout s = layoutSphere(u, vertexAreas(input), so);
+  out.drawing = drawSphere(u.uniform, s);
+  out.corners = cornerLayout(u.uniform, s);
+  out.json["centroid_distance"] = s.centroid.norm();
+  out.json["balance_iterations"] = s.balanceIterations;
+  out.lines.push_back(
+      format("centre of mass     |c| = %.3g (area-weighted, after Moebius balancing)", s.centroid.norm()));
+}
+
+void layOutDisk(const intrinsic::Uniformization& u, const LayoutCommandOptions& o, LayoutOutcome& out) {
+  const DiskLayout d = layoutDisk(u, {o.centreVertex, o.directionVertex});
+  out.drawing = drawDisk(u.uniform, d);
+  out.corners = cornerLayout(u.uniform, d);
+  nlohmann::json circles = nlohmann::json::array();
+  for (const auto& c : d.circles) {
+    circles.push_back({{"centre", {c.centre.x(), c.centre.y()}}, {"radius", c.radius}, {"deviation", c.deviation}});
+    out.lines.push_back(format("circle             centre (%.6g, %.6g), radius %.8g, deviation %.2g", c.centre.x(),
+                               c.centre.y(), c.radius, c.deviation));
+  }
+  out.json["circles"] = circles;
+}
+
+// Step 2 (compute): the canonical-domain layout of the uniformization's target; throws InputError for the targets
+// that have none here (flat cylinder, genus >= 1 with boundary).
+void layOut(const intrinsic::Uniformization& u, const intrinsic::IntrinsicTriangulation& input,
+            const LayoutCommandOptions& o, LayoutOutcome& out) {
+  PictureOptions po;
+  po.tileDepth = o.tiles;
   switch (u.report.target) {
-    case intrinsic::UniformizationTarget::FlatTorus: {
-      const TorusLayout t = layoutTorus(tri);
-      drawing = drawTorus(tri, t, po);
-      corners = cornerLayout(tri, t.domain);
-      j["omega1"] = complexJson(t.omega1);
-      j["omega2"] = complexJson(t.omega2);
-      j["reduced_omega1"] = complexJson(t.reducedOmega1);
-      j["reduced_omega2"] = complexJson(t.reducedOmega2);
-      j["tau"] = complexJson(t.tau);
-      j["relation_residual"] = t.domain.relationResidual;
-      std::snprintf(buf, sizeof buf, "periods (area 1)   omega1 = %.12g %+.12gi, omega2 = %.12g %+.12gi",
-                    t.reducedOmega1.real(), t.reducedOmega1.imag(), t.reducedOmega2.real(), t.reducedOmega2.imag());
-      lines.push_back(buf);
-      std::snprintf(buf, sizeof buf, "modulus tau        %.12g %+.12gi (|Re| <= 1/2, |tau| >= 1)", t.tau.real(),
-                    t.tau.imag());
-      lines.push_back(buf);
-      break;
-    }
-    case intrinsic::UniformizationTarget::Hyperbolic: {
-      const HyperbolicLayout h = layoutHyperbolic(tri);
-      drawing = drawHyperbolic(tri, h, po);
-      corners = cornerLayout(tri, h.domain);
-      nlohmann::json gens = nlohmann::json::array();
-      for (const auto& g : h.generators)
-        gens.push_back({{"a", complexJson(g.matrix(0, 0))},
-                        {"b", complexJson(g.matrix(0, 1))},
-                        {"translation_length", g.translationLength}});
-      j["generators"] = gens;
-      j["relation"] = h.relation;
-      j["relation_residual"] = h.relationResidual;
-      j["max_vertex_residual"] = h.domain.maxVertexResidual;
-      for (std::size_t i = 0; i < h.generators.size(); ++i) {
-        const Mobius& m = h.generators[i].matrix;
-        std::snprintf(buf, sizeof buf, "g%-2zu a = %.10g %+.10gi, b = %.10g %+.10gi, length %.8g", i + 1,
-                      m(0, 0).real(), m(0, 0).imag(), m(0, 1).real(), m(0, 1).imag(),
-                      h.generators[i].translationLength);
-        lines.push_back(buf);
-      }
-      lines.push_back("relation           " + h.relation + " = 1");
-      std::snprintf(buf, sizeof buf, "relation residual  %.3g (max-entry distance from +-I in SU(1,1))",
-                    h.relationResidual);
-      lines.push_back(buf);
-      break;
-    }
-    case intrinsic::UniformizationTarget::Sphere: {
-      SphereLayoutOptions so;
-      so.centreVertex = o.centreVertex;
-      so.directionVertex = o.directionVertex;
-      const SphereLayout s = layoutSphere(u, vertexAreas(input), so);
-      drawing = drawSphere(tri, s);
-      corners = cornerLayout(tri, s);
-      j["centroid_distance"] = s.centroid.norm();
-      j["balance_iterations"] = s.balanceIterations;
-      std::snprintf(buf, sizeof buf, "centre of mass     |c| = %.3g (area-weighted, after Moebius balancing)",
-                    s.centroid.norm());
-      lines.push_back(buf);
-      break;
-    }
-    case intrinsic::UniformizationTarget::CircleDomain: {
-      const DiskLayout d = layoutDisk(u, {o.centreVertex, o.directionVertex});
-      drawing = drawDisk(tri, d);
-      corners = cornerLayout(tri, d);
-      nlohmann::json circles = nlohmann::json::array();
-      for (const auto& c : d.circles) {
-        circles.push_back({{"centre", {c.centre.x(), c.centre.y()}}, {"radius", c.radius}, {"deviation", c.deviation}});
-        std::snprintf(buf, sizeof buf, "circle             centre (%.6g, %.6g), radius %.8g, deviation %.2g",
-                      c.centre.x(), c.centre.y(), c.radius, c.deviation);
-        lines.push_back(buf);
-      }
-      j["circles"] = circles;
-      break;
-    }
+    case intrinsic::UniformizationTarget::FlatTorus:
+      return layOutTorus(u.uniform, po, out);
+    case intrinsic::UniformizationTarget::Hyperbolic:
+      return layOutHyperbolic(u.uniform, po, out);
+    case intrinsic::UniformizationTarget::Sphere:
+      return layOutSphere(u, input, o, out);
+    case intrinsic::UniformizationTarget::CircleDomain:
+      return layOutDisk(u, o, out);
     case intrinsic::UniformizationTarget::FlatCylinder: {
       char height[32];
       std::snprintf(height, sizeof height, "%.6g", u.report.cylinderHeight);
@@ -183,63 +186,74 @@ void runLayout(const LayoutCommandOptions& o) {
       throw InputError("layout: " + o.input + " uniformizes to " + intrinsic::toString(u.report.target) +
                        " (genus >= 1 with boundary), which has no canonical-domain layout here");
   }
+}
+
+// Step 3 (write): the picture or the PLY, chosen by the output's extension `ext`.
+void writeLayout(const LayoutOutcome& out, const LayoutCommandOptions& o, const std::string& ext) {
   if (ext == ".svg") {
     std::ofstream f(o.output);
     if (!f) throw InputError(o.output + ": cannot open for writing");
-    f << toSvg(drawing, o.pixels);
+    f << toSvg(out.drawing, o.pixels);
     if (!f) throw InputError(o.output + ": write failed");
   } else if (ext == ".png") {
-    writePng(drawing, o.output, o.pixels);
+    writePng(out.drawing, o.output, o.pixels);
   } else {
-    writeLayoutPly(corners, o.output);
+    writeLayoutPly(out.corners, o.output);
   }
+}
+
+// parse → uniformize (intrinsic::uniformize) → lay out (embedding/layout) → write → print.
+void runLayout(const LayoutCommandOptions& o) {
+  const std::string ext = extensionOf(o.output);
+  if (ext != ".svg" && ext != ".png" && ext != ".ply")
+    throw InputError("layout: output " + o.output + " must end in .svg, .png or .ply, found '" + ext + "'");
+  progress("reading " + o.input);
+  const intrinsic::IntrinsicTriangulation input = intrinsic::toTriangulation(loadMesh(o.input));
+  intrinsic::UniformizationOptions uo;
+  uo.flow.tolerance = o.tolerance;
+  uo.progress = [](const std::string& line) { progress(line); };
+  const intrinsic::Uniformization u = intrinsic::uniformize(input, uo);
+
+  LayoutOutcome out;
+  out.json = {{"input", o.input},
+              {"output", o.output},
+              {"target", intrinsic::toString(u.report.target)},
+              {"genus", u.report.genus},
+              {"boundary_loops", u.report.boundaryLoops},
+              {"flow_residual", u.report.maxResidual}};
+  layOut(u, input, o, out);
+  writeLayout(out, o, ext);
   if (o.json) {
-    printJson(j);
+    printJson(out.json);
     return;
   }
   std::printf("%s -> %s\n  target             %s, genus %d\n", o.input.c_str(), o.output.c_str(),
               intrinsic::toString(u.report.target).c_str(), u.report.genus);
-  for (const auto& l : lines) std::printf("  %s\n", l.c_str());
+  for (const auto& l : out.lines) std::printf("  %s\n", l.c_str());
 }
 
 }  // namespace
 
 void registerLayoutCommand(CLI::App& app) {
   auto o = std::make_shared<LayoutCommandOptions>();
-  CLI::App* sub = app.add_subcommand("layout", "Lay a surface out in its canonical domain (picture or PLY)");
+  CLI::App* sub = app.add_subcommand(
+      "layout", "Lay a surface out in its canonical domain: disk, sphere, flat torus or Poincare disk");
   sub->footer(
-      "Uniformizes IN (as `conformesh uniformize`) and lays the result out where the uniformization theorem puts it:\n"
-      "  genus 0, boundary   the unit disk / a circle domain, normalized by --centre-vertex (to 0) and\n"
-      "                      --direction-vertex (onto +x)\n"
-      "  closed genus 0      the unit sphere, Moebius-balanced (area-weighted centre of mass at the origin);\n"
-      "                      the picture is an orthographic view, the PLY's texcoords the stereographic plane\n"
-      "  closed genus 1      a flat torus: the surface is cut along a tree-cotree basis into a fundamental domain D;\n"
-      "                      the periods omega1, omega2 are the translations carrying D to its neighbours across\n"
-      "                      the two generator loops; tau = omega2/omega1 is reduced into |Re tau| <= 1/2,\n"
-      "                      |tau| >= 1 (the modular group's fundamental domain), so equal tau = same conformal torus\n"
-      "  closed genus >= 2   D in the Poincare disk; the 2g deck transformations z -> (az + b)/(conj(b)z + conj(a))\n"
-      "                      in SU(1,1) (|a|^2 - |b|^2 = 1); 'length' is the length of the closed geodesic of each\n"
-      "                      generator, 2 acosh|Re a|; the relation read off the cut (each generator once with each\n"
-      "                      sign) and how far its product is from the identity\n"
-      "Output by extension: .svg (D, plus --tiles rings of tiles of the universal cover, and the generator loops in\n"
-      "colour), .png (the same drawn by scripts/plot_layout.py, needs python3-matplotlib), .ply (the uniformized\n"
-      "triangulation with per-corner domain coordinates as `texcoord`, like texture coordinates).\n"
-      "docs/layout.md has the theory; --json prints every figure machine-readably.");
+      "Example: conformesh layout double-torus.off -o double-torus.svg --tiles 2\n"
+      "Details: docs/cli.md#layout (theory: docs/layout.md)");
   sub->add_option("input", o->input, "Input mesh (OFF, OBJ, PLY; positions or edge lengths)")->required();
   sub->add_option("-o,--output", o->output, "Output file: .svg, .png or .ply")->required();
-  sub->add_option("--tiles", o->tiles,
-                  "Rings of tiles of the universal cover in pictures (tori: (2n+1)^2 tiles; "
-                  "hyperbolic: words of length <= n)")
+  sub->add_option("--tiles", o->tiles, "Rings of tiles of the universal cover in pictures (0..4)")
       ->capture_default_str()
-      ->check(CLI::Range(0, 4));
-  sub->add_option("--pixels", o->pixels, "Picture size in pixels")->capture_default_str()->check(CLI::Range(64, 8000));
-  sub->add_option("--centre-vertex", o->centreVertex, "Disk: vertex sent to 0; sphere: vertex sent to the south pole")
+      ->check(untyped(CLI::Range(0, 4)));
+  sub->add_option("--pixels", o->pixels, "Picture size in pixels (64..8000)")
+      ->capture_default_str()
+      ->check(untyped(CLI::Range(64, 8000)));
+  sub->add_option("--centre-vertex", o->centreVertex, "Disk: vertex sent to 0; sphere: to the south pole (-1: none)")
       ->capture_default_str();
-  sub->add_option("--direction-vertex", o->directionVertex, "Disk and sphere: vertex rotated onto the +x direction")
+  sub->add_option("--direction-vertex", o->directionVertex, "Disk and sphere: vertex rotated onto +x (-1: none)")
       ->capture_default_str();
-  sub->add_option("--tolerance", o->tolerance,
-                  "Flow tolerance (radians); the deck relation's residual is about this times the generators' norms")
-      ->capture_default_str();
+  sub->add_option("--tolerance", o->tolerance, "Flow tolerance (radians)")->capture_default_str();
   sub->add_flag("--json", o->json, "Print the figures as JSON");
   sub->callback([o] { runLayout(*o); });
 }

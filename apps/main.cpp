@@ -11,12 +11,12 @@
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "conformesh: intrinsic surface meshing with curvature convergence.\n"
-      "A surface comes in as a Riemannian metric or as a triangulation with edge lengths; conformesh uniformizes it\n"
-      "by discrete Ricci flow, refines it by Delaunay refinement graded by the conformal factor, and checks that the\n"
-      "output's Gaussian curvature measure converges (Li, Zeng, Morvan, Chen, Gu, TVCG 2013).\n"
-      "Run `conformesh <command> --help` for each command; docs/cli.md has worked examples.",
+      "conformesh: intrinsic surface meshing with curvature convergence (Li, Zeng, Morvan, Chen, Gu, TVCG 2013).\n"
+      "Metric or triangulation in; Ricci-flow uniformization, graded Delaunay refinement, curvature check out.",
       "conformesh"};
+  app.footer("Run `conformesh <command> --help` for each command.\nDetails: docs/cli.md");
+  // One line per option: wide enough for the longest "--name TYPE=DEFAULT" column of any subcommand (they share it).
+  app.get_formatter()->column_width(33);
   app.require_subcommand(1);
   bool quiet = false;
   app.add_flag("-q,--quiet", quiet, "Suppress progress lines on stderr");

@@ -155,44 +155,24 @@ void run(const RefineArgs& args) {
 void registerRefineCommand(CLI::App& app) {
   auto args = std::make_shared<RefineArgs>();
   CLI::App* sub = app.add_subcommand(
-      "refine",
-      "Delaunay refinement of a constant-curvature triangulation (paper §4.2), graded by the conformal factor");
-  sub->footer(
-      "The input is a uniformized triangulation T0* (edge lengths in its background geometry: euclidean for flat\n"
-      "tori, disks and circle domains, spherical for the unit sphere, hyperbolic for genus >= 2). Bad triangles are\n"
-      "split at their circumcentres, found by tracing geodesics across triangles (no layout of the surface), and\n"
-      "the Delaunay property of the background geometry is restored by intrinsic flips. A triangle is bad-sized\n"
-      "when its circumradius exceeds eps * exp(-lambda(c)), lambda the per-vertex property 'lambda' interpolated at\n"
-      "the circumcentre c (ignored with --uniform), and bad-shaped when circumradius / shortest edge exceeds B.\n"
-      "Boundary loops inscribed in a circle are split on the circle (Ruppert's rules). The output PLY keeps the\n"
-      "background and gives each vertex's place on the input: input_face, input_b0..2 (barycentric; projective for\n"
-      "curved backgrounds). The report: smallest angle (>= arcsin(1/(2B)), 20.7° at B = sqrt 2), mean per-triangle\n"
-      "smallest angle, circumradii (max <= eps), share under 30°, an angle histogram, Delaunay and Gauss-Bonnet "
-      "checks.\n"
-      "Example: conformesh refine torus.ply --eps 0.02 -o torus_refined.ply");
+      "refine", "Refine a constant-curvature triangulation (Delaunay, graded by lambda; paper §4.2)");
+  sub->footer("Example: conformesh refine torus.ply --eps 0.02 -o torus_refined.ply\nDetails: docs/cli.md#refine");
   sub->add_option("input", args->input, "Input mesh (.ply with edge lengths, or .obj/.off/.ply with positions)")
       ->required();
   sub->add_option("--eps", args->epsilon, "Size bound: largest circumradius (times exp(-lambda)), > 0")->required();
-  sub->add_option("--ratio", args->ratio,
-                  "Shape bound B = circumradius / shortest edge (>= 1). sqrt 2 (default): Ruppert, smallest angle "
-                  ">= 20.7°; 1: smallest angle >= 30°, guaranteed on closed surfaces");
+  sub->add_option("--ratio", args->ratio, "Shape bound B = circumradius / shortest edge, >= 1 (sqrt 2: 20.7 deg)")
+      ->capture_default_str();
   sub->add_flag("--uniform", args->uniform, "Ignore the input's 'lambda' property: uniform refinement (lambda = 0)");
-  sub->add_option("--boundary", args->boundary,
-                  "How boundary edges are split: auto (on the circle if the loop is cocircular, else at the geodesic "
-                  "midpoint), circle (error if a loop is not a circle), geodesic")
-      ->check(CLI::IsMember({"auto", "circle", "geodesic"}));
-  sub->add_option(
-         "--segment-rule", args->segmentRule,
-         "Boundary segments: 'ruppert' (default; split when encroached, conforming Delaunay, termination proved for "
-         "B >= sqrt 2) or 'chew' (Chew's second algorithm: constrained Delaunay, a segment is split only for "
-         "a circumcentre beyond it, deleting the inserted interior vertices in its diametral disk first; "
-         "proved in the plane for B >= sqrt(5)/2 = 1.118, 26.57 deg; docs/refinement.md §6)")
-      ->check(CLI::IsMember({"ruppert", "chew"}));
-  sub->add_flag("--off-centers", args->offCenters,
-                "Split bad-shaped triangles at Üngör's off-centre instead of the circumcentre when nearer (Euclidean "
-                "background; same bounds, usually fewer vertices when grading drives the refinement)");
-  addSmoothingOptions(sub, args->smoothing, args->smoothingRule, "0 = the paper's unsmoothed refinement (default)");
-  sub->add_option("--max-insertions", args->maxInsertions, "Stop with an error after this many insertions");
+  sub->add_option("--boundary", args->boundary, "Boundary edges split: auto, circle (on the circle) or geodesic")
+      ->check(oneOf({"auto", "circle", "geodesic"}))
+      ->capture_default_str();
+  sub->add_option("--segment-rule", args->segmentRule, "Boundary segments: ruppert (conforming) or chew (constrained)")
+      ->check(oneOf({"ruppert", "chew"}))
+      ->capture_default_str();
+  sub->add_flag("--off-centers", args->offCenters, "Split bad-shaped triangles at Üngör's off-centre when nearer");
+  addSmoothingOptions(sub, args->smoothing, args->smoothingRule, "");
+  sub->add_option("--max-insertions", args->maxInsertions, "Stop with an error after this many insertions")
+      ->capture_default_str();
   sub->add_option("-o,--output", args->output, "Output .ply (edge lengths, background, input locations)")->required();
   sub->add_flag("--json", args->json, "Print the statistics and quality report as JSON on stdout");
   sub->add_flag("--ascii", args->ascii, "Write ASCII PLY instead of binary little-endian PLY");

@@ -8,10 +8,10 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
-#include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/intrinsic/io/vtk_writer.h"
+#include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
 #include "remesh_mesh_input.h"
 #include "report_json.h"
@@ -39,7 +39,8 @@ struct RemeshArgs {
 };
 
 void run(const RemeshArgs& a) {
-  if (isMeshFilePath(a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh.h)
+  if (isMeshFilePath(
+          a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh_input.h)
     return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
                           a.refineIn, a.smoothing, a.smoothingRule, a.segmentRule});
   if (a.refineIn != "uniformized")
@@ -116,59 +117,37 @@ void run(const RemeshArgs& a) {
 
 void registerRemeshCommand(CLI::App& app) {
   auto a = std::make_shared<RemeshArgs>();
-  CLI::App* sub = app.add_subcommand("remesh", "Mesh a surface given by a smooth metric, with curvature convergence");
+  CLI::App* sub = app.add_subcommand(
+      "remesh", "Mesh a smooth metric or a mesh file: uniformize, refine, pull back, check curvature");
   sub->footer(
-      "Pipeline (docs/cli.md, docs/theory.md): discretize the metric's chart into T0 -> uniformize T0 by discrete\n"
-      "Ricci flow to curvature +1 / 0 / -1 (conformal factor lambda) -> Delaunay refinement of the uniformized\n"
-      "surface until every circumradius is below eps*exp(-lambda) and every circumradius/shortest edge below B ->\n"
-      "pull the new vertices back to the surface; each output edge gets its length in the ORIGINAL metric.\n"
-      "Reported: smallest angle and circumradii measured with the output's own lengths; inverted triangles of the\n"
-      "map back (0 for a homeomorphism); and, unless --no-check, the Gaussian curvature measure check: for each\n"
-      "vertex v, the sum of angle deficits in the geodesic ball B(v, r), r = 0.05*sqrt(area), against the integral\n"
-      "of the metric's K over the same region (paper eq. 5); e_G is their mean absolute difference.\n"
-      "Families and their parameters: conformesh discretize --list.\n"
-      "A mesh file (.off/.obj/.ply) as INPUT: uniformize it, refine, pull back through its faces; output lengths\n"
-      "are the developed lengths of the edges' image paths on the input, and the check compares the output's\n"
-      "deficits with the input's own over the same balls (docs/cli.md, remesh). With --refine-in input the input\n"
-      "itself is refined in its own metric (no Ricci flow), and the angle bound holds in that metric.\n"
-      "Example: conformesh remesh kerr-newman --param a=0.99 --eps 0.05 -o kerr.ply --vtk kerr.vtk");
+      "Example: conformesh remesh kerr-newman --param a=0.99 --eps 0.05 -o kerr.ply --vtk kerr.vtk\n"
+      "Details: docs/cli.md#remesh (mesh files: docs/cli.md#remesh-meshfile)");
   sub->add_option("family", a->family,
-                  "Metric family (see `conformesh discretize --list`), or a mesh file (.off/.obj/.ply)");
+                  "Metric family (`conformesh discretize --list`) or a mesh file (.off/.obj/.ply)");
   addFieldOption(sub, a->field);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
-  sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric (required)")->required();
-  sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (default sqrt(2): 20.7 deg)");
+  sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric")->required();
+  sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (sqrt 2: 20.7 deg)")
+      ->capture_default_str();
   sub->add_flag("--uniform", a->uniform, "Ignore the conformal factor (uniform in the uniformized domain)");
-  sub->add_option("--t0-resolution", a->t0Resolution,
-                  "Resolution of the initial triangulation T0 (default: automatic from eps, 8..32)");
-  sub->add_option("--disk-target", a->diskTarget,
-                  "Disk charts: 'circle' maps to the unit disk; 'keep-boundary' flattens keeping the boundary lengths "
-                  "(corners keep their angles, lambda = 0 on the boundary); 'auto' (default) keeps the boundary of "
-                  "rectangle charts, which have corners")
-      ->check(CLI::IsMember({"auto", "circle", "keep-boundary"}));
-  sub->add_option(
-         "--segment-rule", a->segmentRule,
-         "Boundary segments: 'ruppert' (default; split when encroached, conforming Delaunay, termination proved for "
-         "B >= sqrt 2) or 'chew' (Chew's second algorithm: constrained Delaunay, a segment is split only for "
-         "a circumcentre beyond it, deleting the inserted interior vertices in its diametral disk first; "
-         "proved in the plane for B >= sqrt(5)/2 = 1.118, 26.57 deg; docs/refinement.md §6)")
-      ->check(CLI::IsMember({"ruppert", "chew"}));
+  sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of T0 (0: from eps, 8..32)")->capture_default_str();
+  sub->add_option("--disk-target", a->diskTarget, "Disk charts: auto, circle (unit disk) or keep-boundary")
+      ->check(oneOf({"auto", "circle", "keep-boundary"}))
+      ->capture_default_str();
+  sub->add_option("--segment-rule", a->segmentRule, "Boundary segments: ruppert (conforming) or chew (constrained)")
+      ->check(oneOf({"ruppert", "chew"}))
+      ->capture_default_str();
   sub->add_option("-o,--output", a->output, "Output PLY (edge lengths, vertex fields)")->required();
   sub->add_option("--vtk", a->vtk, "Also write legacy VTK for ParaView");
   sub->add_flag("--json", a->json, "Print the report as JSON");
   sub->add_flag("--no-check", a->noCheck, "Skip the curvature-measure check");
-  sub->add_option("--region", a->region, "Regions of the check: ball (default) or union (Theorem 3.4's unions)")
-      ->check(CLI::IsMember({"ball", "union"}));
-  addSmoothingOptions(sub, a->smoothing, a->smoothingRule,
-                      "Raises the mean smallest angle (`convergence` uses 1), at ~3.5x the refinement time. 0 = the "
-                      "paper's unsmoothed refinement. Metric families, fields and mesh files with --refine-in input (a "
-                      "mesh refined uniformized is refined unsmoothed; --smoothing is then an error)");
-  sub->add_option("--refine-in", a->refineIn,
-                  "Mesh files: the metric the Delaunay refinement runs in. 'uniformized' (default, the paper's): the "
-                  "Ricci-flow uniformization, graded by exp(-lambda), pulled back through the input faces; 'input': "
-                  "the input's own flat cone metric, size bound eps uniform on the input, so the angle bound holds in "
-                  "the input's metric")
-      ->check(CLI::IsMember({"uniformized", "input"}));
+  sub->add_option("--region", a->region, "Regions of the check: ball or union (Theorem 3.4's unions)")
+      ->check(oneOf({"ball", "union"}))
+      ->capture_default_str();
+  addSmoothingOptions(sub, a->smoothing, a->smoothingRule, "; mesh files: input route only");
+  sub->add_option("--refine-in", a->refineIn, "Mesh files: refine in the uniformized or the input metric")
+      ->check(oneOf({"uniformized", "input"}))
+      ->capture_default_str();
   sub->add_flag("--ascii", a->ascii, "Write ASCII PLY instead of binary");
   sub->callback([a] { run(*a); });
 }

@@ -1,5 +1,5 @@
-// remesh_mesh.h — the mesh-file branch of `conformesh remesh`: when INPUT names a mesh file (.off, .obj, .ply), the
-// pipeline is uniformize → refine → pull back through the input faces (refine/mesh_remesh.h), or with
+// remesh_mesh_input.h — the mesh-file branch of `conformesh remesh`: when INPUT names a mesh file (.off, .obj, .ply),
+// the pipeline is uniformize → refine → pull back through the input faces (refine/pipeline/mesh_remesh.h), or with
 // `--refine-in input` the refinement of the input in its own metric; the curvature check compares the output's angle
 // deficits with the input's own over the same balls. Parsing and printing only.
 #pragma once

@@ -3,8 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
 
@@ -14,6 +14,7 @@ nlohmann::json qualityJson(const refine::QualityReport& q);
 nlohmann::json uniformizationJson(const intrinsic::UniformizationReport& u);
 nlohmann::json refineStatisticsJson(const refine::RefineStatistics& s);
 // Summary figures and the histogram; per-vertex values are left to the output files.
-nlohmann::json curvatureMeasureJson(const intrinsic::CurvatureMeasureResult& c, const intrinsic::CurvatureMeasureOptions& o);
+nlohmann::json curvatureMeasureJson(const intrinsic::CurvatureMeasureResult& c,
+                                    const intrinsic::CurvatureMeasureOptions& o);
 
 }  // namespace conformesh::apps

@@ -126,49 +126,21 @@ void runUniformize(const UniformizeOptions& o) {
 void registerUniformizeCommand(CLI::App& app) {
   auto o = std::make_shared<UniformizeOptions>();
   CLI::App* sub =
-      app.add_subcommand("uniformize", "Uniformize a triangulation to constant curvature (discrete Ricci flow)");
+      app.add_subcommand("uniformize", "Uniformize a triangulation to constant curvature by discrete Ricci flow");
   sub->footer(
-      "Computes T0* of the paper's section 4.1 by the discrete Yamabe flow of vertex scaling with Ptolemy (Delaunay)\n"
-      "flips (Gu-Luo-Sun-Wu 2018), Newton's method on the convex energy, CHOLMOD Cholesky. The target follows\n"
-      "the topology:\n"
-      "  closed genus 0      the unit sphere (puncture a vertex, flatten, inverse stereographic projection,\n"
-      "                      Moebius centring)              -> PLY with spherical lengths and positions on S^2\n"
-      "  closed genus 1      a flat torus of area 1         -> PLY with Euclidean lengths (no positions)\n"
-      "  closed genus >= 2   hyperbolic, curvature -1       -> PLY with hyperbolic lengths\n"
-      "  genus 0, boundary   a circle domain (the longest loop the unit circle) -> Euclidean lengths, positions\n"
-      "                      (an annulus beyond log(R/r) = 17.6: a flat cylinder of circumference 2 pi, both\n"
-      "                      loops geodesics, height = log(R/r) -> Euclidean lengths, no positions)\n"
-      "  genus >= 1, boundary hyperbolic with geodesic boundary loops\n"
-      "The output PLY carries `comment geometry <background>`, the edge element with the lengths, and the vertex\n"
-      "property `lambda`: the original metric is ~ e^(2 lambda) times the uniform one. Vertices are not moved by\n"
-      "vertex scaling, so vertex i of the output is vertex i of the input; with --correspondence the flip log is\n"
-      "written as JSON so that any point (face, barycentric) of T0* can be mapped to T0 (flow_correspondence.h).\n"
-      "Printed figures: Newton steps and flips; max |K - K^|, the curvature residual at exit (radians); the worst\n"
-      "interior |angle sum - 2pi| recomputed from the output lengths in the output geometry; the Gauss-Bonnet\n"
-      "residual (sum of curvature + K_background * area - 2 pi chi). A flow that does not converge is an error\n"
-      "naming the residual it reached (exit status 1). docs/ricci_flow.md has the theory and the guarantees.\n"
-      "--method circle-packing | inversive-distance: the circle-packing flows of Jin-Kim-Luo-Gu (2008), for\n"
-      "comparison; closed surfaces of genus >= 1 only, no flips, so a solution need not exist: tangential\n"
-      "packings always exist (Koebe-Andreev-Thurston) but forget the input lengths (the result depends on the\n"
-      "connectivity alone); inversive-distance packings keep the input's conformal data but Newton can be blocked\n"
-      "by a triangle that ceases to exist, reported as an error naming the face. lambda is then the log ratio of\n"
-      "the mean edge lengths at each vertex before and after (an estimate; the correspondence is face-wise affine).\n"
-      "Example: conformesh uniformize bunny.off -o bunny-sphere.ply --correspondence bunny-map.json");
+      "Example: conformesh uniformize bunny.off -o bunny-sphere.ply --correspondence bunny-map.json\n"
+      "Details: docs/cli.md#uniformize");
   sub->add_option("input", o->input, "Input mesh (OBJ, OFF or PLY; lengths from the PLY edge element if present)")
       ->required();
   sub->add_option("-o,--output", o->output, "Output PLY (T0*)")->required();
-  sub->add_option("--method", o->method,
-                  "Flow: yamabe (vertex scaling with Ptolemy flips, every topology), circle-packing (tangential\n"
-                  "circle packing) or inversive-distance (circle packing keeping the input's inversive distances);\n"
-                  "the two circle-packing flows take closed surfaces of genus >= 1 only")
-      ->check(CLI::IsMember({"yamabe", "circle-packing", "inversive-distance"}))
+  sub->add_option("--method", o->method, "Flow: yamabe, circle-packing or inversive-distance (closed genus >= 1)")
+      ->check(oneOf({"yamabe", "circle-packing", "inversive-distance"}))
       ->capture_default_str();
-  sub->add_option("--tolerance", o->tolerance,
-                  "Stop when max |K - K^| is below this (radians); raised to 3e-13*sqrt(#vertices) on huge meshes")
-      ->check(CLI::PositiveNumber)
+  sub->add_option("--tolerance", o->tolerance, "Stop when max |K - K^| is below this (radians, > 0)")
+      ->check(untyped(CLI::PositiveNumber))
       ->capture_default_str();
-  sub->add_option("--max-steps", o->maxSteps, "Newton step cap per flow solve")
-      ->check(CLI::PositiveNumber)
+  sub->add_option("--max-steps", o->maxSteps, "Newton step cap per flow solve (> 0)")
+      ->check(untyped(CLI::PositiveNumber))
       ->capture_default_str();
   sub->add_option("--correspondence", o->correspondence, "Write the T0* -> T0 flip log (JSON) here");
   sub->add_flag("--json", o->json, "Print the report as JSON");
