@@ -148,31 +148,45 @@ Eigen::Vector2d circumcentre(const Eigen::Vector2d& A, const Eigen::Vector2d& B,
       (A.squaredNorm() * (C.x() - B.x()) + B.squaredNorm() * (A.x() - C.x()) + C.squaredNorm() * (B.x() - A.x())) / d};
 }
 
+// Boundary loops as edge lists (halfedge indices move with flips; edge indices and their endpoints on the boundary
+// do not), and which loop is the longest in the input metric (the outer circle).
+struct BoundaryLoops {
+  std::vector<std::vector<int>> edges, tips;  // per loop, in loop order
+  int outer = 0;
+};
+
+BoundaryLoops boundaryLoopsOf(const IntrinsicTriangulation& input) {
+  const std::vector<std::vector<int>> loopsH = input.mesh.boundaryLoops();
+  BoundaryLoops loops;
+  loops.edges.resize(loopsH.size());
+  loops.tips.resize(loopsH.size());
+  double longest = -1;
+  for (std::size_t i = 0; i < loopsH.size(); ++i) {
+    double total = 0;
+    for (int h : loopsH[i]) {
+      loops.edges[i].push_back(input.mesh.edge(h));
+      loops.tips[i].push_back(input.mesh.tip(h));
+      total += input.length(h);
+    }
+    if (total > longest) {
+      longest = total;
+      loops.outer = static_cast<int>(i);
+    }
+  }
+  return loops;
+}
+
 Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const UniformizationOptions& options,
                                       UniformizationReport report) {
   report.target = UniformizationTarget::CircleDomain;
   DiscreteConformalMetric metric(referencePenner(input), Background::Euclidean);
   const HalfedgeMesh& m = metric.mesh();  // boundary edges are never flipped, so loops keep their halfedge edges
   FlowCorrespondence log(m.nFaces());
-  // Boundary loops as edge lists (halfedge indices move with flips; edge indices and their endpoints on the boundary
-  // do not). The longest loop (in the input metric) becomes the outer circle.
-  const std::vector<std::vector<int>> loopsH = input.mesh.boundaryLoops();
-  std::vector<std::vector<int>> loopEdges(loopsH.size()), loopTips(loopsH.size());
-  int outer = 0;
-  double longest = -1;
-  for (std::size_t i = 0; i < loopsH.size(); ++i) {
-    double total = 0;
-    for (int h : loopsH[i]) {
-      loopEdges[i].push_back(input.mesh.edge(h));
-      loopTips[i].push_back(input.mesh.tip(h));
-      total += input.length(h);
-    }
-    if (total > longest) {
-      longest = total;
-      outer = static_cast<int>(i);
-    }
-  }
-  if (loopsH.size() == 2) {
+  const BoundaryLoops loops = boundaryLoopsOf(input);
+  const std::vector<std::vector<int>>& loopEdges = loops.edges;
+  const std::vector<std::vector<int>>& loopTips = loops.tips;
+  const int outer = loops.outer;
+  if (loopTips.size() == 2) {
     // On the reference chords: the Euclidean metric whose conformal class the flow works in (the input itself when
     // Euclidean).
     const double atLeast = annulusLogRadiusRatioLowerBound(referencePenner(input), loopTips[0], loopTips[1]);
