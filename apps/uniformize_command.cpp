@@ -75,10 +75,7 @@ void runUniformize(const UniformizeOptions& o) {
   }
 
   // Figures a reader can check: the worst interior angle-sum error in the written geometry and Gauss–Bonnet.
-  const std::vector<double> sums = intrinsic::angleSums(u.uniform);
-  double worst = 0;
-  for (int v = 0; v < u.uniform.mesh.nVertices(); ++v)
-    if (!u.uniform.mesh.isBoundaryVertex(v)) worst = std::max(worst, std::abs(sums[v] - 2 * M_PI));
+  const double worst = intrinsic::maxInteriorAngleSumError(u.uniform);
   const intrinsic::CurvatureTotals totals = intrinsic::curvatureTotals(u.uniform);
   const auto& r = u.report;
   nlohmann::json j = {{"input", o.input},

@@ -1,22 +1,12 @@
-// uniformization.h — uniformizing a triangulated surface to constant curvature by the discrete Ricci (Yamabe) flow of
-// vertex scaling: the paper's §4.1 step T0 → T0*, with the conformal factor λ and the correspondence T0* → T0.
-//
-// Targets by topology (one connected component):
-//   closed genus 0  → the unit sphere: puncture a vertex ∞, flatten the rest with Dirichlet data u_a = −2 log ℓ_a∞ on
-//                     its link (the limit of vertex scaling with ∞ sent to infinity), lay out, inverse stereographic
-//                     projection, Möbius centring; spherical lengths from the chords of the points, or (when a
-//                     chord is below 10⁻⁴, e.g. thin appendages) from the exact Penner form e^{(w_i+w_j)/2} c⁰_ij;
-//   closed genus 1  → flat, total area 1;
-//   closed genus ≥ 2 → hyperbolic, curvature −1;
-//   genus 0 with b ≥ 1 boundary loops → flat, every loop a circle (a disk to the unit disk, b ≥ 2 to a circle domain,
-//                     the longest loop the outer unit circle): the boundary targets are the turning angles of the
-//                     polygon inscribed in a circle with the current boundary lengths, solved together with the
-//                     interior by Newton on the coupled system (ricci_flow.h, CircleLoop) rather than by iterating;
-//                     An annulus whose inner circle would be below e^{−17.6} of the outer one (log(R/r) beyond what
-//                     planar double coordinates resolve to 10⁻⁸) → the flat cylinder instead: both loops closed
-//                     geodesics of circumference 2π, height Λ = log(R/r) (the circle domain is its image by e^{iz});
-//   genus ≥ 1 with boundary → hyperbolic with geodesic boundary loops (zero geodesic curvature).
-// docs/ricci_flow.md derives each step and states what is guaranteed.
+// uniformization.h — uniformize: a triangulated surface (one component) to constant curvature by the discrete Ricci
+// (Yamabe) flow of vertex scaling, the paper's §4.1 step T0 → T0*, with the conformal factor λ and the correspondence
+// T0* → T0. The target follows the topology (UniformizationTarget):
+//   closed genus 0 → the unit sphere (puncture, flat Dirichlet problem, inverse stereographic projection, Möbius
+//   centring); closed genus 1 → flat, area 1; closed genus ≥ 2 → curvature −1; genus 0 with boundary → a circle
+//   domain (the longest loop the unit circle), an annulus too thin for double precision → the flat cylinder;
+//   genus ≥ 1 with boundary → curvature −1 with geodesic boundary loops.
+// Reads its input only. Builds on ricci_flow.h (the Newton solver) and planar_layout.h (layoutFlat).
+// docs/ricci_flow.md §3 and "Uniformization targets and the genus-0 puncture" derive each target.
 #pragma once
 
 #include <cstdint>
@@ -27,8 +17,9 @@
 #include <Eigen/Core>
 
 #include "conformesh/intrinsic/flow/flow_correspondence.h"
-#include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
+#include "conformesh/intrinsic/flow/planar_layout.h"
 #include "conformesh/intrinsic/flow/ricci_flow.h"
+#include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
 
 namespace conformesh::intrinsic {
 
@@ -45,19 +36,20 @@ enum class UniformizationTarget {
 std::string toString(UniformizationTarget target);
 
 struct UniformizationOptions {
-  RicciFlowOptions flow;
-  // Genus 0: how many puncture vertices to try before giving up (a puncture fails when the flattened link polygon is
-  // not convex, so the stereographic image would not be embedded).
+  RicciFlowOptions flow;  // the options of every flow solve (ricci_flow.h)
+  // Genus 0: how many puncture vertices to try before giving up (≥ 1; a puncture fails when its spherical image is
+  // not an embedded triangulation).
   int maxPunctureAttempts = 8;
-  // Genus 0: a vertex of the puncture's link whose disk angle sum exceeds π by more than this many times the flow's
-  // residual is released from the link without waiting for the solve to converge (0: reflex vertices are judged at
-  // solutions only). 10: once Newton converges quadratically the sums move by about the residual per step, so such a
-  // vertex is reflex at the solution too; each vertex is judged early at most once (docs/ricci_flow.md, "Map back").
+  // Genus 0: a link vertex of the puncture whose disk angle sum exceeds π by more than this many times the flow's
+  // residual (radians) is released from the link without waiting for the solve to converge; 0: only at solutions.
   double earlyReflexFactor = 10;
   // Möbius centring: stop when the area-weighted centroid of the vertices is within this distance of the origin.
   double centringTolerance = 1e-12;
   // Progress messages (one per Newton step and per stage); may be empty.
   std::function<void(const std::string&)> progress;
+
+  // "" when valid, else "UniformizationOptions::<field>: expected …, found …" (the flow's options not included).
+  std::string validate() const;
 };
 
 struct UniformizationReport {
@@ -73,8 +65,8 @@ struct UniformizationReport {
   int centringIterations = 0;
   // FlatCylinder only: the height of the cylinder of circumference 2π, i.e. log(R/r) = 2π × the annulus's modulus.
   double cylinderHeight = 0;
-  // Genus 0: the spherical lengths were taken from the Penner form e^{(w_i+w_j)/2} c⁰_ij instead of the chords of the
-  // points, because some chord was below 10⁻⁴ (thin appendages; then `positions` of tiny regions coincide in double).
+  // Genus 0: the spherical lengths are the Penner form e^{(w_i+w_j)/2} c⁰_ij, not the chords of the points (some chord
+  // was below 10⁻⁴; `positions` of tiny regions then coincide in double precision).
   bool pennerLengths = false;
   double seconds = 0;
 };
@@ -91,18 +83,15 @@ struct Uniformization {
   UniformizationReport report;
 };
 
-// Uniformizes `input` (any background: its Penner lengths are its chords). Throws InputError for more than one
-// connected component or invalid lengths; ConvergenceError (with the residual reached) when a flow does not converge,
-// when a circle domain's layout does not reproduce a loop's circle (three or more loops; an annulus falls back to the
-// flat cylinder), or when a flat cylinder's two ends differ in length (docs/ricci_flow.md §3.3).
+// Uniformizes `input` (any background: its Penner lengths are its chords). Throws InputError for invalid options
+// (options.validate()), more than one connected component or invalid lengths; ConvergenceError (with the residual
+// reached) when a flow does not converge, when a circle domain's layout does not reproduce a loop's circle (three or
+// more loops; an annulus falls back to the flat cylinder), or when a flat cylinder's two ends differ in length
+// (docs/ricci_flow.md §3.3).
 Uniformization uniformize(const IntrinsicTriangulation& input, const UniformizationOptions& options = {});
 
-// Lays out a flat (Euclidean) triangulation of a topological disk or a planar domain in the plane by breadth-first
-// unfolding from face 0, placing each new vertex from its face's first placed edge by the angle there; edge directions
-// are carried along by rotation, not recomputed from coordinates (round-off would grow across short edges). Throws
-// InputError when the surface is not Euclidean, and ConvergenceError when a vertex reached twice lands more than
-// `mismatch` (relative to the mean edge length) away from itself — i.e. the metric is not flat or has holonomy.
-std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, double mismatch = 1e-6,
-                                        const std::vector<char>& skipFaces = {});
+// The worst |angle sum − 2π| over the interior vertices of `tri` (radians, in its own background geometry): the
+// check a reader of T0* can redo from the written lengths (0 for a surface with no interior vertex).
+double maxInteriorAngleSumError(const IntrinsicTriangulation& tri);
 
 }  // namespace conformesh::intrinsic
