@@ -112,6 +112,9 @@ struct RicciFlowOptions {
   // (RicciFlowReport::stoppedByCaller, not converged). The genus-0 caller stops as soon as a link vertex of the
   // puncture is clearly reflex, instead of converging a problem whose star is about to change. May be empty.
   std::function<bool(const std::vector<double>& angleSums, double maxResidual)> stopAfterStep;
+
+  // What is wrong with these options ("" when valid), as "RicciFlowOptions::<field>: expected …, found …".
+  std::string validate() const;
 };
 
 struct RicciFlowReport {
