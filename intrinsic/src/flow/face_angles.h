@@ -31,7 +31,8 @@ void currentLengths(const DiscreteConformalMetric& metric, std::vector<double>& 
 void evaluateFaces(const DiscreteConformalMetric& metric, std::vector<double>& length, std::vector<double>& sums,
                    std::vector<FaceGeometry>& faces);
 
-// J[k][j] = ∂θ_k/∂u_{v_j} for the corners of a face (0 for a degenerate face: the extended angles are locally constant).
+// J[k][j] = ∂θ_k/∂u_{v_j} for the corners of a face (0 for a degenerate face: the extended angles are locally
+// constant).
 void angleJacobian(Background bg, const FaceGeometry& g, double J[3][3]);
 
 }  // namespace conformesh::intrinsic::detail

@@ -33,8 +33,8 @@ void FlowSolverCache::analyse(const SparseMatrix& H) {
     solver_.analyzePattern(H);
   if (solver_.factor() == nullptr)
     throw ConvergenceError("discrete Ricci flow: CHOLMOD's symbolic analysis of the " + std::to_string(H.rows()) +
-                           "-unknown Newton system failed (CHOLMOD status " +
-                           std::to_string(solver_.cholmod().status) + "; −2 is out of memory)");
+                           "-unknown Newton system failed (CHOLMOD status " + std::to_string(solver_.cholmod().status) +
+                           "; −2 is out of memory)");
   patternValid_ = true;
   analysed_ = false;
 }

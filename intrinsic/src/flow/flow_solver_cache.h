@@ -1,8 +1,8 @@
-// flow_solver_cache.h — the linear algebra of the symmetric Newton systems H δ = b, shared by consecutive flow solves on
-// one metric (RicciFlowOptions::solverCache): the last CHOLMOD factor, which preconditions conjugate gradients in the
-// next steps, its single-precision copy, and the arrays of the solve. Private to the flow (newton_flow.cpp,
-// ricci_flow.cpp); owns its CHOLMOD state, touches nothing else. Derivation: docs/ricci_flow.md §2 ("The Newton
-// systems").
+// flow_solver_cache.h — the linear algebra of the symmetric Newton systems H δ = b, shared by consecutive flow solves
+// on one metric (RicciFlowOptions::solverCache): the last CHOLMOD factor, which preconditions conjugate gradients in
+// the next steps, its single-precision copy, and the arrays of the solve. Private to the flow (newton_flow.cpp,
+// ricci_flow.cpp); owns its CHOLMOD state, touches nothing else. Derivation: docs/ricci_flow.md §2 ("Linear
+// algebra").
 #pragma once
 
 #include <vector>

@@ -309,8 +309,8 @@ Eigen::VectorXd NewtonFlowSolver::symmetricNewtonStep() {
   }
   work_->assembly.assemble(metric_, work_->faces, H);
   // Forcing term η = max(10⁻¹³, 10⁻² min(1, max|r|), min(10⁻², ε/(4|r|₂))).
-  const double eta = std::max({1e-13, 1e-2 * std::min(1.0, maxAbs_),
-                               std::min(1e-2, 0.25 * report_.effectiveTolerance / std::sqrt(norm2_))});
+  const double eta = std::max(
+      {1e-13, 1e-2 * std::min(1.0, maxAbs_), std::min(1e-2, 0.25 * report_.effectiveTolerance / std::sqrt(norm2_))});
   Eigen::VectorXd delta;
   if (!solver_->solve(H, r_, eta, delta)) {
     std::ostringstream msg;
@@ -529,8 +529,7 @@ bool NewtonFlowSolver::finishStep(const NewtonStepInfo& info, double t) {
   ++report_.newtonSteps;
   report_.maxResidual = maxAbs_;
   if (options_.onStep) options_.onStep(done);
-  if (options_.stopAfterStep && maxAbs_ > report_.effectiveTolerance &&
-      options_.stopAfterStep(work_->sums, maxAbs_)) {
+  if (options_.stopAfterStep && maxAbs_ > report_.effectiveTolerance && options_.stopAfterStep(work_->sums, maxAbs_)) {
     report_.stoppedByCaller = true;
     return true;
   }
@@ -549,8 +548,8 @@ RicciFlowReport NewtonFlowSolver::finish() {
     for (int f = 0; f < m_.nFaces() && !options_.allowDegenerateFaces; ++f)
       if (!metric_.isFrozen(f) && work_->faces[f].degenerate)
         throw ConvergenceError("discrete Ricci flow converged to a degenerate face " + std::to_string(f) + " (" +
-                               std::to_string(m_.faceVertex(f, 0)) + ", " + std::to_string(m_.faceVertex(f, 1)) +
-                               ", " + std::to_string(m_.faceVertex(f, 2)) +
+                               std::to_string(m_.faceVertex(f, 0)) + ", " + std::to_string(m_.faceVertex(f, 1)) + ", " +
+                               std::to_string(m_.faceVertex(f, 2)) +
                                "): the target needs a flip of an edge that may not flip (a boundary edge)");
   }
   report_.angleSums = work_->sums;

@@ -50,8 +50,7 @@ void SymmetricAssembly::rebuild(const DiscreteConformalMetric& metric, const std
   std::copy(outer.begin(), outer.end(), H.outerIndexPtr());
   int* inner = H.innerIndexPtr();
   onTwoCores(n, kParallelMin, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
-    for (auto c = begin; c < end; ++c)
-      std::copy_n(rows.begin() + start[c], outer[c + 1] - outer[c], inner + outer[c]);
+    for (auto c = begin; c < end; ++c) std::copy_n(rows.begin() + start[c], outer[c + 1] - outer[c], inner + outer[c]);
   });
   // The slot of every edge's entry (a loop edge: its vertex's diagonal), then of every face's entries.
   std::vector<int> edgeSlot(nE, -1);

@@ -32,7 +32,6 @@ class SymmetricAssembly {
   void assemble(const DiscreteConformalMetric& metric, const std::vector<FaceGeometry>& faces,
                 Eigen::SparseMatrix<double>& H);
 
-
  private:
   std::vector<char> identity_;
   std::vector<int> slot_;  // 9 per face, pair (k, j) at 3k + j: the position of its entry in H, −1 when not stored
