@@ -285,32 +285,48 @@ std::array<std::array<double, 3>, 3> circlePackingAngleJacobian(Background g, co
 // The flow
 // =====================================================================================================================
 
-CirclePacking uniformizeByCirclePacking(const IntrinsicTriangulation& input, const CirclePackingOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  const Topology topo = checkInput(input);
-  const HalfedgeMesh& m = input.mesh;
-  const int nV = m.nVertices();
+namespace {
 
-  if (!options.startPerturbation.empty() && static_cast<int>(options.startPerturbation.size()) != nV)
-    throw InputError("circle packing: startPerturbation has " + std::to_string(options.startPerturbation.size()) +
-                     " entries for " + std::to_string(nV) + " vertices");
-  CirclePacking out;
-  out.scheme = options.scheme;
-  Problem p;
-  p.mesh = &m;
-  p.geometry = topo.genus == 1 ? Background::Euclidean : Background::Hyperbolic;
+// The steps of uniformizeByCirclePacking: inversive distances → starting radii → Newton (assemble and factor the
+// Hessian, Armijo line search inside the admissible region, stopping tests) → area normalisation → outputs.
+class CirclePackingFlow {
+ public:
+  CirclePackingFlow(const IntrinsicTriangulation& input, const CirclePackingOptions& options)
+      : start_(std::chrono::steady_clock::now()),
+        input_(input),
+        options_(options),
+        topo_(checkInput(input)),
+        m_(input.mesh),
+        nV_(input.mesh.nVertices()) {}
 
+  CirclePacking run() {
+    if (!options_.startPerturbation.empty() && static_cast<int>(options_.startPerturbation.size()) != nV_)
+      throw InputError("circle packing: startPerturbation has " + std::to_string(options_.startPerturbation.size()) +
+                       " entries for " + std::to_string(nV_) + " vertices");
+    out_.scheme = options_.scheme;
+    p_.mesh = &m_;
+    p_.geometry = topo_.genus == 1 ? Background::Euclidean : Background::Hyperbolic;
+    setInversiveDistances();
+    findStart();
+    chooseUnknowns();
+    newton();
+    if (p_.geometry == Background::Euclidean) scaleToUnitArea();
+    return outputs();
+  }
+
+ private:
   // Inversive distances in the input's own background, from its lengths and initial radii.
-  const std::vector<double> r0 = initialCircleRadii(input, options.initialRadii);
-  p.I.assign(m.nEdges(), 1.0);
-  if (options.scheme == CirclePackingScheme::InversiveDistance) {
-    for (int e = 0; e < m.nEdges(); ++e) {
-      const int h = m.edgeHalfedge(e);
-      p.I[e] = inversiveDistanceOf(input.background, r0[m.tail(h)], r0[m.tip(h)], input.edgeLengths[e]);
-      if (!(p.I[e] >= 0)) {
+  void setInversiveDistances() {
+    r0_ = initialCircleRadii(input_, options_.initialRadii);
+    p_.I.assign(m_.nEdges(), 1.0);
+    if (options_.scheme != CirclePackingScheme::InversiveDistance) return;
+    for (int e = 0; e < m_.nEdges(); ++e) {
+      const int h = m_.edgeHalfedge(e);
+      p_.I[e] = inversiveDistanceOf(input_.background, r0_[m_.tail(h)], r0_[m_.tip(h)], input_.edgeLengths[e]);
+      if (!(p_.I[e] >= 0)) {
         std::ostringstream msg;
-        msg << "circle packing: edge " << e << " (vertices " << m.tail(h) << ", " << m.tip(h)
-            << ") has inversive distance " << p.I[e]
+        msg << "circle packing: edge " << e << " (vertices " << m_.tail(h) << ", " << m_.tip(h)
+            << ") has inversive distance " << p_.I[e]
             << " < 0 with the chosen initial radii; the energy is convex only for I >= 0 (use initial radii of a "
                "third of the shortest edge)";
         throw InputError(msg.str());
@@ -321,179 +337,248 @@ CirclePacking uniformizeByCirclePacking(const IntrinsicTriangulation& input, con
   // Initial u. Same background: the initial radii (for inversive distances they reproduce the input lengths). A
   // Euclidean input in the hyperbolic class keeps its inversive distances; its radii are scaled by s so that the
   // small triangles have roughly the target area −2πχ (s² A_E ≈ −2πχ), halved while a triangle does not exist.
-  std::vector<double> u(nV);
-  State state;
-  double scale = 1;
-  if (p.geometry == Background::Hyperbolic && input.background == Background::Euclidean)
-    scale = std::sqrt(-2 * M_PI * topo.chi / totalArea(input));
-  for (int attempt = 0;; ++attempt) {
-    for (int v = 0; v < nV; ++v)
-      u[v] = uFromRadius(p.geometry, scale * r0[v]) +
-             (options.startPerturbation.empty() ? 0.0 : options.startPerturbation[v]);
-    if (evaluate(p, u, state)) break;
-    if (p.geometry == Background::Euclidean || attempt >= 60)
-      throw ConvergenceError("circle packing cannot start: " + state.failure);
-    scale *= 0.5;
+  void findStart() {
+    u_.resize(nV_);
+    double scale = 1;
+    if (p_.geometry == Background::Hyperbolic && input_.background == Background::Euclidean)
+      scale = std::sqrt(-2 * M_PI * topo_.chi / totalArea(input_));
+    for (int attempt = 0;; ++attempt) {
+      for (int v = 0; v < nV_; ++v)
+        u_[v] = uFromRadius(p_.geometry, scale * r0_[v]) +
+                (options_.startPerturbation.empty() ? 0.0 : options_.startPerturbation[v]);
+      if (evaluate(p_, u_, state_)) break;
+      if (p_.geometry == Background::Euclidean || attempt >= 60)
+        throw ConvergenceError("circle packing cannot start: " + state_.failure);
+      scale *= 0.5;
+    }
   }
 
   // Newton on the free vertices. Euclidean closed surfaces are invariant under u → u + const: vertex 0 is pinned and
   // its equation holds by Gauss–Bonnet (Σ (2π − Θ_v) = 2πχ = 0 for genus 1).
-  const bool pin = p.geometry == Background::Euclidean;
-  std::vector<int> index(nV);
-  int n = 0;
-  for (int v = 0; v < nV; ++v) index[v] = (pin && v == 0) ? -1 : n++;
-  const double tolerance = std::max(options.tolerance, options.relativeFloor * std::sqrt(double(nV)));
+  void chooseUnknowns() {
+    const bool pin = p_.geometry == Background::Euclidean;
+    index_.resize(nV_);
+    n_ = 0;
+    for (int v = 0; v < nV_; ++v) index_[v] = (pin && v == 0) ? -1 : n_++;
+    tolerance_ = std::max(options_.tolerance, options_.relativeFloor * std::sqrt(double(nV_)));
+  }
 
-  auto residual = [&](const State& s, Eigen::VectorXd& r, double& maxAbs) {
-    r.resize(n);
+  // r = 2π − Θ on the unknowns of state s; returns |r|², sets max |2π − Θ| over all vertices.
+  double residual(const State& s, Eigen::VectorXd& r, double& maxAbs) const {
+    r.resize(n_);
     maxAbs = 0;
-    for (int v = 0; v < nV; ++v) {
+    for (int v = 0; v < nV_; ++v) {
       const double rv = 2 * M_PI - s.sum[v];
       maxAbs = std::max(maxAbs, std::abs(rv));
-      if (index[v] >= 0) r[index[v]] = rv;
+      if (index_[v] >= 0) r[index_[v]] = rv;
     }
     return r.squaredNorm();
-  };
-  auto failWith = [&](const std::string& what, double maxAbs) {
+  }
+
+  [[noreturn]] void failWith(const std::string& what, double maxAbs) const {
     std::ostringstream msg;
     msg.precision(3);
-    msg << toString(options.scheme) << " flow did not converge: " << what << "; max |Θ̂ − Θ| = " << maxAbs
-        << " rad after " << out.result.report.newtonSteps << " Newton steps (tolerance " << tolerance
+    msg << toString(options_.scheme) << " flow did not converge: " << what << "; max |Θ̂ − Θ| = " << maxAbs
+        << " rad after " << out_.result.report.newtonSteps << " Newton steps (tolerance " << tolerance_
         << "). The classical circle-packing flow does no flips, so a solution need not exist for this "
            "triangulation";
     throw ConvergenceError(msg.str());
-  };
+  }
 
-  Eigen::VectorXd r;
-  double maxAbs = 0;
-  double norm2 = residual(state, r, maxAbs);
-  using SparseMatrix = Eigen::SparseMatrix<double>;
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> solver;
-  bool analyzed = false;
-  std::vector<Eigen::Triplet<double>> triplets;
-  SparseMatrix H(n, n);
-  State trial;
-  std::vector<double> uTrial(nV);
-  int& steps = out.result.report.newtonSteps;
-  int blocked = 0;  // consecutive steps cut below 1/16 by the boundary of the admissible region
-  while (true) {
-    out.residualHistory.push_back(maxAbs);
-    if (maxAbs <= tolerance) break;
-    if (steps >= options.maxNewtonSteps) failWith("the Newton step cap was reached", maxAbs);
-    // H = −∂Θ/∂u on the free vertices, lower triangle, symmetrized against round-off.
-    triplets.clear();
-    triplets.reserve(9 * static_cast<std::size_t>(m.nFaces()));
-    for (int f = 0; f < m.nFaces(); ++f) {
+  void newton() {
+    norm2_ = residual(state_, r_, maxAbs_);
+    H_.resize(n_, n_);
+    uTrial_.resize(nV_);
+    int& steps = out_.result.report.newtonSteps;
+    while (true) {
+      out_.residualHistory.push_back(maxAbs_);
+      if (maxAbs_ <= tolerance_) break;
+      if (steps >= options_.maxNewtonSteps) failWith("the Newton step cap was reached", maxAbs_);
+      const Eigen::VectorXd delta = newtonDirection();
+      std::string lastFailure;
+      const double t = lineSearch(delta, lastFailure);
+      ++steps;
+      checkBlocked(t, lastFailure);
+      reportProgress(t, lastFailure);
+    }
+  }
+
+  // δ = −H⁻¹ r with H = −∂Θ/∂u on the free vertices (lower triangle, symmetrized against round-off), by CHOLMOD.
+  Eigen::VectorXd newtonDirection() {
+    triplets_.clear();
+    triplets_.reserve(9 * static_cast<std::size_t>(m_.nFaces()));
+    for (int f = 0; f < m_.nFaces(); ++f) {
       double J[3][3];
-      faceJacobian(p, state, f, J);
+      faceJacobian(p_, state_, f, J);
       int idx[3];
-      for (int k = 0; k < 3; ++k) idx[k] = index[m.faceVertex(f, k)];
+      for (int k = 0; k < 3; ++k) idx[k] = index_[m_.faceVertex(f, k)];
       for (int k = 0; k < 3; ++k)
         for (int j = 0; j < 3; ++j)
-          if (idx[k] >= 0 && idx[j] >= idx[k]) triplets.emplace_back(idx[j], idx[k], -0.5 * (J[k][j] + J[j][k]));
+          if (idx[k] >= 0 && idx[j] >= idx[k]) triplets_.emplace_back(idx[j], idx[k], -0.5 * (J[k][j] + J[j][k]));
     }
-    H.setFromTriplets(triplets.begin(), triplets.end());
-    if (!analyzed) {
-      solver.analyzePattern(H);  // the connectivity never changes: one symbolic analysis for the whole flow
-      analyzed = true;
+    H_.setFromTriplets(triplets_.begin(), triplets_.end());
+    if (!analyzed_) {
+      solver_.analyzePattern(H_);  // the connectivity never changes: one symbolic analysis for the whole flow
+      analyzed_ = true;
     }
-    solver.factorize(H);
-    if (solver.info() != Eigen::Success) {
+    solver_.factorize(H_);
+    if (solver_.info() != Eigen::Success) {
       double ev = 0;
-      const int f = mostIndefiniteFace(p, state, ev);
+      const int f = mostIndefiniteFace(p_, state_, ev);
       std::ostringstream what;
-      what << "the Hessian is not positive definite at Newton step " << steps;
-      if (f >= 0) what << " (" << faceName(m, f) << " has a local Hessian with λ_min/λ_max = " << ev << ")";
-      failWith(what.str(), maxAbs);
+      what << "the Hessian is not positive definite at Newton step " << out_.result.report.newtonSteps;
+      if (f >= 0) what << " (" << faceName(m_, f) << " has a local Hessian with λ_min/λ_max = " << ev << ")";
+      failWith(what.str(), maxAbs_);
     }
-    const Eigen::VectorXd delta = -solver.solve(r);
-    // Armijo on ½|r|², and every trial must stay in the admissible region: every radius finite (hyperbolic u < 0),
-    // every triangle existing.
+    return -solver_.solve(r_);
+  }
+
+  // Armijo on ½|r|², and every trial must stay in the admissible region: every radius finite (hyperbolic u < 0),
+  // every triangle existing. Returns the accepted step length; lastFailure tells why the last rejected trial was
+  // inadmissible (empty when none was).
+  double lineSearch(const Eigen::VectorXd& delta, std::string& lastFailure) {
     double t = 1;
-    std::string lastFailure;
     while (true) {
-      for (int v = 0; v < nV; ++v) uTrial[v] = u[v] + (index[v] >= 0 ? t * delta[index[v]] : 0.0);
-      if (evaluate(p, uTrial, trial)) {
+      for (int v = 0; v < nV_; ++v) uTrial_[v] = u_[v] + (index_[v] >= 0 ? t * delta[index_[v]] : 0.0);
+      if (evaluate(p_, uTrial_, trial_)) {
         Eigen::VectorXd rTrial;
         double maxTrial = 0;
-        const double normTrial = residual(trial, rTrial, maxTrial);
-        if (normTrial <= (1 - 2 * options.armijo * t) * norm2) {
-          u.swap(uTrial);
-          std::swap(state, trial);
-          r = rTrial;
-          maxAbs = maxTrial;
-          norm2 = normTrial;
-          break;
+        const double normTrial = residual(trial_, rTrial, maxTrial);
+        if (normTrial <= (1 - 2 * options_.armijo * t) * norm2_) {
+          u_.swap(uTrial_);
+          std::swap(state_, trial_);
+          r_ = rTrial;
+          maxAbs_ = maxTrial;
+          norm2_ = normTrial;
+          return t;
         }
       } else {
-        lastFailure = trial.failure;
+        lastFailure = trial_.failure;
       }
       t *= 0.5;
-      if (t < options.minStep) {
+      if (t < options_.minStep) {
         failWith(lastFailure.empty() ? std::string("the line search stalled")
                                      : "every step leaves the admissible region: " + lastFailure,
-                 maxAbs);
+                 maxAbs_);
       }
     }
-    ++steps;
-    blocked = (!lastFailure.empty() && t < 1.0 / 16) ? blocked + 1 : 0;
-    if (blocked >= options.maxBlockedSteps) {
-      std::ostringstream what;
-      what << "Newton is blocked by the boundary of the admissible region (every radius finite, every triangle "
-              "existing): "
-           << blocked << " consecutive steps cut short, the last to length " << t << "; at the next longer trial "
-           << lastFailure;
-      failWith(what.str(), maxAbs);
-    }
-    if (options.progress) {
-      std::ostringstream line;
-      line.precision(3);
-      line << toString(options.scheme) << ": Newton step " << steps << ", max |K - K^| = " << maxAbs
-           << " rad, step length " << t;
-      if (!lastFailure.empty()) line << " (shortened: a longer step leaves the admissible region)";
-      options.progress(line.str());
-    }
+  }
+
+  // Stopping test: too many consecutive steps cut below 1/16 by the boundary of the admissible region.
+  void checkBlocked(double t, const std::string& lastFailure) {
+    blocked_ = (!lastFailure.empty() && t < 1.0 / 16) ? blocked_ + 1 : 0;
+    if (blocked_ < options_.maxBlockedSteps) return;
+    std::ostringstream what;
+    what << "Newton is blocked by the boundary of the admissible region (every radius finite, every triangle "
+            "existing): "
+         << blocked_ << " consecutive steps cut short, the last to length " << t << "; at the next longer trial "
+         << lastFailure;
+    failWith(what.str(), maxAbs_);
+  }
+
+  void reportProgress(double t, const std::string& lastFailure) const {
+    if (!options_.progress) return;
+    std::ostringstream line;
+    line.precision(3);
+    line << toString(options_.scheme) << ": Newton step " << out_.result.report.newtonSteps
+         << ", max |K - K^| = " << maxAbs_ << " rad, step length " << t;
+    if (!lastFailure.empty()) line << " (shortened: a longer step leaves the admissible region)";
+    options_.progress(line.str());
   }
 
   // Flat tori: scale to area 1 (u → u − ½ log A multiplies every radius, hence every length, by A^{−1/2}).
-  if (p.geometry == Background::Euclidean) {
+  void scaleToUnitArea() {
     double area = 0;
-    for (int f = 0; f < m.nFaces(); ++f)
-      area += triangleArea(p.geometry, state.length[m.edge(3 * f)], state.length[m.edge(3 * f + 1)],
-                           state.length[m.edge(3 * f + 2)]);
-    for (double& x : u) x -= 0.5 * std::log(area);
-    if (!evaluate(p, u, state)) failWith("rescaling to area 1 failed: " + state.failure, maxAbs);
-    residual(state, r, maxAbs);  // angles are scale-invariant: this changes maxAbs by round-off only
+    for (int f = 0; f < m_.nFaces(); ++f)
+      area += triangleArea(p_.geometry, state_.length[m_.edge(3 * f)], state_.length[m_.edge(3 * f + 1)],
+                           state_.length[m_.edge(3 * f + 2)]);
+    for (double& x : u_) x -= 0.5 * std::log(area);
+    if (!evaluate(p_, u_, state_)) failWith("rescaling to area 1 failed: " + state_.failure, maxAbs_);
+    residual(state_, r_, maxAbs_);  // angles are scale-invariant: this changes maxAbs by round-off only
   }
 
-  // === outputs
-  Uniformization& res = out.result;
-  res.uniform.mesh = m;
-  res.uniform.background = p.geometry;
-  res.uniform.edgeLengths = state.length;
-  // λ_i = log(Σ ℓ⁰ / Σ ℓ*) over the edges at i: a circle packing moves the vertices relative to each other, so there is
-  // no exact per-vertex factor; this is the ratio of the local length scales, O(h)-accurate for smooth conformal maps.
-  std::vector<double> before(nV, 0.0), after(nV, 0.0);
-  for (int h = 0; h < m.nHalfedges(); ++h) {
-    before[m.tail(h)] += input.length(h);
-    after[m.tail(h)] += state.length[m.edge(h)];
+  CirclePacking outputs() {
+    Uniformization& res = out_.result;
+    res.uniform.mesh = m_;
+    res.uniform.background = p_.geometry;
+    res.uniform.edgeLengths = state_.length;
+    // λ_i = log(Σ ℓ⁰ / Σ ℓ*) over the edges at i: a circle packing moves the vertices relative to each other, so there
+    // is no exact per-vertex factor; this is the ratio of the local length scales, O(h)-accurate for smooth conformal
+    // maps.
+    std::vector<double> before(nV_, 0.0), after(nV_, 0.0);
+    for (int h = 0; h < m_.nHalfedges(); ++h) {
+      before[m_.tail(h)] += input_.length(h);
+      after[m_.tail(h)] += state_.length[m_.edge(h)];
+    }
+    res.lambda.resize(nV_);
+    for (int v = 0; v < nV_; ++v) res.lambda[v] = std::log(before[v] / after[v]);
+    res.correspondence = FlowCorrespondence(m_.nFaces());
+    res.correspondence.logScale.assign(nV_, 0.0);
+    out_.radii.resize(nV_);
+    for (int v = 0; v < nV_; ++v) out_.radii[v] = state_.radius[v].r;
+    out_.inversiveDistance = p_.I;
+    UniformizationReport& rep = res.report;
+    rep.target =
+        p_.geometry == Background::Euclidean ? UniformizationTarget::FlatTorus : UniformizationTarget::Hyperbolic;
+    rep.genus = topo_.genus;
+    rep.boundaryLoops = 0;
+    rep.flips = 0;
+    rep.maxResidual = maxAbs_;
+    rep.effectiveTolerance = tolerance_;
+    rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    return out_;
   }
-  res.lambda.resize(nV);
-  for (int v = 0; v < nV; ++v) res.lambda[v] = std::log(before[v] / after[v]);
-  res.correspondence = FlowCorrespondence(m.nFaces());
-  res.correspondence.logScale.assign(nV, 0.0);
-  out.radii.resize(nV);
-  for (int v = 0; v < nV; ++v) out.radii[v] = state.radius[v].r;
-  out.inversiveDistance = p.I;
-  UniformizationReport& rep = res.report;
-  rep.target = p.geometry == Background::Euclidean ? UniformizationTarget::FlatTorus : UniformizationTarget::Hyperbolic;
-  rep.genus = topo.genus;
-  rep.boundaryLoops = 0;
-  rep.flips = 0;
-  rep.maxResidual = maxAbs;
-  rep.effectiveTolerance = tolerance;
-  rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return out;
+
+  using SparseMatrix = Eigen::SparseMatrix<double>;
+
+  const std::chrono::steady_clock::time_point start_;
+  const IntrinsicTriangulation& input_;
+  const CirclePackingOptions& options_;
+  const Topology topo_;
+  const HalfedgeMesh& m_;
+  const int nV_;
+  CirclePacking out_;
+  Problem p_;
+  std::vector<double> r0_;  // initial radii in the input's background
+  std::vector<double> u_;   // the flow variable per vertex
+  State state_, trial_;     // at u_, and at the line search's trial point
+  std::vector<double> uTrial_;
+  std::vector<int> index_;  // unknown of each vertex (−1: pinned)
+  int n_ = 0;
+  double tolerance_ = 0;
+  Eigen::VectorXd r_;
+  double maxAbs_ = 0, norm2_ = 0;
+  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> solver_;
+  bool analyzed_ = false;
+  std::vector<Eigen::Triplet<double>> triplets_;
+  SparseMatrix H_;
+  int blocked_ = 0;  // consecutive steps cut below 1/16 by the boundary of the admissible region
+};
+
+}  // namespace
+
+std::string CirclePackingOptions::validate() const {
+  std::ostringstream msg;
+  msg.precision(17);
+  if (!(tolerance >= 0) || !std::isfinite(tolerance))
+    msg << "CirclePackingOptions::tolerance: expected a finite value >= 0, found " << tolerance;
+  else if (!(relativeFloor >= 0) || !std::isfinite(relativeFloor))
+    msg << "CirclePackingOptions::relativeFloor: expected a finite value >= 0, found " << relativeFloor;
+  else if (maxNewtonSteps < 0)
+    msg << "CirclePackingOptions::maxNewtonSteps: expected >= 0, found " << maxNewtonSteps;
+  else if (!(armijo > 0 && armijo < 0.5))
+    msg << "CirclePackingOptions::armijo: expected 0 < armijo < 0.5, found " << armijo;
+  else if (!(minStep > 0 && minStep <= 1))
+    msg << "CirclePackingOptions::minStep: expected 0 < minStep <= 1, found " << minStep;
+  else if (maxBlockedSteps < 1)
+    msg << "CirclePackingOptions::maxBlockedSteps: expected >= 1, found " << maxBlockedSteps;
+  return msg.str();
+}
+
+CirclePacking uniformizeByCirclePacking(const IntrinsicTriangulation& input, const CirclePackingOptions& options) {
+  const std::string invalid = options.validate();
+  if (!invalid.empty()) throw InputError(invalid);
+  return CirclePackingFlow(input, options).run();
 }
 
 }  // namespace conformesh::intrinsic

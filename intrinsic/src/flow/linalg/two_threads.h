@@ -1,4 +1,5 @@
-// two_threads.h — splitting independent per-element work of the Ricci flow and the uniformization between two cores.
+// two_threads.h — splitting independent per-element work of the Ricci flow and the uniformization between two cores:
+// one persistent helper thread. Private to the flow; touches only the data its callers' chunks write.
 #pragma once
 
 #include <cstddef>
@@ -11,10 +12,10 @@ constexpr std::ptrdiff_t kParallelMin = 20000;
 
 // Runs chunk(0), …, chunk(count − 1), each exactly once, on the calling thread and on one persistent helper thread.
 // Chunks are claimed one at a time; the caller waits only for chunks the helper has actually started. On a machine
-// whose two cores are busy with other processes the helper may not run for a scheduling period (measured: a
-// fork-join per loop made a 3 s run take 15 s at load 6); the caller then does every chunk itself, never slower than
-// one thread. Results do not depend on which thread runs a chunk as long as chunks write disjoint data. Calls from
-// several threads at once, or from inside a chunk, run serially.
+// whose two cores are busy with other processes the helper may not run for a scheduling period; the caller then does
+// every chunk itself, never slower than one thread (docs/ricci_flow.md §2, "Two cores elsewhere"). Results do not
+// depend on which thread runs a chunk as long as chunks write disjoint data. Calls from several threads at once, or
+// from inside a chunk, run serially.
 void runChunks(int count, const std::function<void(int)>& chunk);
 
 // body(begin, end) over [0, n) in 8 fixed ranges shared by runChunks (one range below `minimum`): each index belongs to

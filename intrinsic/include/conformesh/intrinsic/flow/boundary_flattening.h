@@ -1,16 +1,14 @@
 // boundary_flattening.h — corner-aware flat uniformization of a topological disk: the flat metric conformal to the
 // input that keeps every boundary edge's length (Dirichlet u = 0 on the boundary, zero curvature inside). Unlike the
-// map to the unit disk (uniformization.h, CircleDomain), it has a bounded conformal factor up to the boundary, so the
-// corners of a patch whose chart is a rectangle stay corners with their own angles instead of becoming z^{1/2}
-// singularities of the map; the domain is the flat polygon whose sides are the input's boundary chords.
+// map to the unit disk (uniformization.h, CircleDomain) its conformal factor is bounded up to the boundary, so the
+// corners of a patch keep their angles; the domain is the flat polygon of the input's boundary chords.
 //
-// Smooth statement (docs/refinement.md, "Surfaces whose boundary has corners"): g_flat = e^{-2λ} g with Δ_g λ = −K on
-// the surface and λ = 0 on its boundary (a linear Poisson problem). λ is bounded and, at a convex corner, C¹ up to the
-// corner, so every corner keeps its angle and the paper's grading ε·e^{−λ} (§4.2.3) stays bounded and Lipschitz.
+// Reads its input only; runs solveConformalFlow on a copy. The smooth statement (Δ_g λ = −K, λ = 0 on the boundary):
+// docs/refinement.md, "Surfaces whose boundary has corners".
 #pragma once
 
-#include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
 
 namespace conformesh::intrinsic {
 

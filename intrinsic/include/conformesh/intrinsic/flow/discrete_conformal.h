@@ -1,13 +1,10 @@
-// discrete_conformal.h — discrete conformal metrics by vertex scaling, kept in Penner coordinates so that Delaunay
-// (Ptolemy) flips make every conformal factor u admissible (Gu–Luo–Sun–Wu, J. Differential Geom. 2018; Gu–Guo–Luo–
-// Sun–Wu, part II, for the hyperbolic case).
+// discrete_conformal.h — discrete conformal metrics by vertex scaling, kept in Penner coordinates: a connectivity,
+// reference Penner (chord) lengths c⁰ and a conformal factor u per vertex, c_ij = e^{(u_i+u_j)/2} c⁰_ij, with Ptolemy
+// flips c_cd = (c_ad c_bc + c_db c_ca)/c_ab that keep every u admissible (Gu–Luo–Sun–Wu 2018; Gu–Guo–Luo–Sun–Wu for
+// the hyperbolic case).
 //
-// A metric is a connectivity, reference Penner lengths c⁰_e (for a Euclidean input: its edge lengths) and a conformal
-// factor u per vertex. The Penner length of edge ij is c_ij = e^{(u_i+u_j)/2} c⁰_ij and the edge length in the
-// background geometry is ℓ = c (Euclidean), 2 asinh(c/2) (hyperbolic: sinh(ℓ/2) = e^{(u_i+u_j)/2} sinh(ℓ⁰/2)) or
-// 2 asin(c/2) (spherical); c is the chord of the edge in the Euclidean, hyperboloid resp. sphere model. Flips replace
-// the diagonal by Ptolemy's c_cd = (c_ad c_bc + c_db c_ca)/c_ab, which is exact in the Penner (decorated ideal) class
-// for any u, and is the geometric diagonal exactly when the quad is cocircular — when a continuous flow flips.
+// A DiscreteConformalMetric owns its triangulation; flips change only it and the correspondence log they are given.
+// Background lengths from chords, and why Ptolemy flips are exact: docs/ricci_flow.md §1.
 #pragma once
 
 #include <cstdint>
@@ -27,9 +24,8 @@ double lengthDerivativeInU(Background g, double length);
 
 // Penner-coordinate Delaunay test of interior edge ab with triangles (a, b, c), (b, a, d), from Penner lengths:
 // (c_bc² + c_ca² − c_ab²)/(c_bc c_ca) + (c_ad² + c_db² − c_ab²)/(c_ad c_db) = 2(cos γ_c + cos γ_d), non-negative iff
-// the edge is Delaunay (γ_c + γ_d ≤ π). Defined for any positive lengths, including ones violating the triangle
-// inequality (Epstein–Penner convex hull condition in horocyclic arc lengths), which is what makes it usable before the
-// flips have repaired a triangulation.
+// the edge is Delaunay. Defined for any positive lengths, also ones violating the triangle inequality
+// (docs/ricci_flow.md §1).
 double pennerDelaunayMargin(double ab, double bc, double ca, double ad, double db);
 
 class DiscreteConformalMetric {

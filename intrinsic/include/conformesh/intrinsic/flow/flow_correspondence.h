@@ -1,15 +1,10 @@
 // flow_correspondence.h — which point of the input triangulation T0 each point of the uniformized triangulation T0*
-// is, across the vertex scaling and the Ptolemy flips the discrete Ricci flow performed.
+// is, across the vertex scaling and the Ptolemy flips the discrete Ricci flow performed: a log of the flips (with their
+// reference Penner lengths) and the per-vertex log scale, replayed to map points either way. The map is a
+// piecewise-projective homeomorphism, K-quasi-conformal as the paper's Remark 1 needs.
 //
-// Model (Penner; Bobenko–Pinkall–Springborn 2015; Gillespie–Springborn–Crane 2021): a triangle with Penner (chord)
-// lengths c_ij is a decorated ideal hyperbolic triangle, its vertices light-like vectors p_i of R^{2,1} with
-// <p_i, p_j> = −c_ij²/2. A point with barycentric coordinates b in the chord triangle is the ray Σ b_i p_i. Vertex
-// scaling c_ij → e^{(w_i+w_j)/2} c_ij rescales p_i → e^{w_i} p_i, and a Ptolemy flip re-triangulates the same ideal
-// quadrilateral, so the ray is a point of one fixed surface throughout the flow. The map T0* → T0 is therefore: rescale
-// the barycentric coordinates by e^{w_i} and replay the flip log backwards, re-expressing each point from the two
-// post-flip triangles into the two pre-flip ones of the same ideal quad. On each triangle the map is projective, it
-// fixes vertices, keeps edges on edges with a rule that depends on the edge alone (continuous across edges) and
-// preserves orientation: a piecewise-projective homeomorphism, K-quasi-conformal as the paper's Remark 1 needs.
+// Pure data and maps: touches nothing but its own log. The model (decorated ideal triangles, light-like vectors of
+// R^{2,1}) and the replay: docs/ricci_flow.md §5.
 #pragma once
 
 #include <array>
