@@ -57,7 +57,7 @@ std::string UniformizationOptions::validate() const {
     return expected("earlyReflexFactor", "a finite value >= 0 (0: off)", earlyReflexFactor);
   if (!(centringTolerance >= 0) || !std::isfinite(centringTolerance))
     return expected("centringTolerance", "a finite value >= 0", centringTolerance);
-  return "";
+  return flow.validate();  // the flow options every target's solve uses
 }
 
 double maxInteriorAngleSumError(const IntrinsicTriangulation& tri) {
