@@ -1,10 +1,6 @@
-// corner_angle.h — the corner angle of a halfedge, with a fast path for the Euclidean background (internal header).
-//
-// The refinement evaluates corner angles after every insertion and flip (signposts, layouts, traces). For Euclidean
-// triangles A = atan2(4·area, b² + c² − a²) with the area by Kahan's ordering of Heron's formula (sides sorted by three
-// comparisons): one square root and one arctangent, accurate for needles and caps alike (the numerator keeps full
-// relative accuracy; the denominator's round-off moves A by at most a few ulps). Curved backgrounds use the core's
-// half-angle formulas (intrinsic::cornerAngle).
+// corner_angle.h — the corner angle of a halfedge, with a fast path for the Euclidean background (internal header,
+// pure inline functions). Euclidean: A = atan2(4·area, b² + c² − a²) with Kahan's ordering of Heron's formula, one
+// square root and one arctangent, accurate for needles and caps alike; curved backgrounds use intrinsic::cornerAngle.
 #pragma once
 
 #include <algorithm>

@@ -1,24 +1,10 @@
 // delaunay_refinement.h — Delaunay refinement of an intrinsic triangulation of constant curvature (paper §4.2.2),
-// graded by the conformal factor (§4.2.3), with Ruppert's boundary rules on boundary circles.
-//
-// The triangulation is refined where it lies, intrinsically: a bad triangle's circumcentre is found by tracing the
-// geodesic from one of its vertices across triangles (geodesic_trace.h), inserted there, and the Delaunay property of
-// the background geometry is restored by Lawson's intrinsic flips. A triangle with circumcentre c and circumradius r is
-//   bad-sized  when r > ε·e^(−λ(c))   (λ the conformal factor, interpolated on the input at c; λ ≡ 0: uniform),
-//   bad-shaped when r / (shortest edge) > B.
-// Every inserted vertex records its place on the input (input_location.h), kept through later flips by signposts.
-//
-// Boundaries (Euclidean background): each boundary loop of a uniformized disk / circle domain is inscribed in a circle
-// whose centre and radius are computed from the loop's own edge lengths and turning angles (a loop counts as a circle
-// when its vertices lie on one to `circleTolerance`, it has at least 6 of them and it turns by at most 60° at each). An
-// encroached boundary edge (its apex angle exceeds 90°, i.e. a vertex lies inside its diametral circle) is split at the
-// midpoint of its ARC — on the circle, not on the chord — and a circumcentre that lies outside the domain or encroaches
-// a boundary edge is not inserted; the edge is split instead (Ruppert 1995). For loops that are not cocircular, and in
-// curved backgrounds, boundary edges are split at their geodesic midpoint. At boundary corners below 60° segments are
-// split on concentric shells and the shape test is waived for the corner's triangles (their size is still enforced),
-// so that refinement does not cascade into the corner. With SegmentRule::Chew the boundary rules are Chew's second
-// algorithm instead (constrained Delaunay; free vertices deleted from a split segment's diametral disk,
-// vertex_removal.h). docs/refinement.md states what is guaranteed.
+// graded by the conformal factor (§4.2.3), with Ruppert's (or Chew's) boundary rules: refineDelaunay and its options,
+// statistics and result. Bad triangles (circumradius r > ε·e^(−λ(c)) or r / shortest edge > B) are split at their
+// circumcentre, located by geodesic tracing (geodesic_trace.h) and kept on the input by signposts (signposts.h,
+// input_location.h); Lawson flips restore the Delaunay property. Encroached boundary edges are split on their circle
+// (cocircular loops) or at their geodesic midpoint. The algorithm, the boundary rules and what is guaranteed are in
+// docs/refinement.md §1, §5, §6. Reads the input triangulation; returns a new one.
 #pragma once
 
 #include <cstdint>
@@ -27,8 +13,8 @@
 #include <vector>
 
 #include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
-#include "conformesh/refine/trace/input_location.h"
 #include "conformesh/refine/delaunay/vertex_smoothing.h"
+#include "conformesh/refine/trace/input_location.h"
 
 namespace conformesh::refine {
 
@@ -41,16 +27,12 @@ enum class BoundarySplit {
 
 // What happens at boundary segments (docs/refinement.md §5–6).
 enum class SegmentRule {
-  // Ruppert 1995: a segment with a vertex inside its diametral circle (encroached) is split before any triangle; a
-  // circumcentre outside the domain or inside a diametral circle is rejected and that segment split. The output is
-  // conforming Delaunay. Termination proved for B ≥ √2 (corners ≥ 60°, planar).
+  // Ruppert 1995: an encroached segment is split before any triangle; a circumcentre outside the domain or inside a
+  // diametral circle is rejected and that segment split. Conforming Delaunay output; terminates for B ≥ √2.
   Ruppert,
-  // Chew's second algorithm (Chew 1993; analysed by Shewchuk 2002): the triangulation is constrained Delaunay (boundary
-  // edges are never flipped; a vertex may lie inside a segment's diametral circle); a circumcentre is rejected only
-  // when
-  // it is not visible — the geodesic to it crosses a segment s — and then every free vertex (inserted, interior) inside
-  // the diametral disk of s and reachable from s without crossing the boundary is deleted before s is split. Shewchuk
-  // proves termination for B ≥ √5/2 ≈ 1.118 (26.57°) in the plane.
+  // Chew's second algorithm (Chew 1993, Shewchuk 2002): constrained Delaunay; a circumcentre is rejected only when the
+  // geodesic to it crosses a segment s, and then the free vertices inside s's diametral disk are deleted before s is
+  // split (vertex_removal.h). Terminates for B ≥ √5/2 on convex planar domains.
   Chew,
 };
 
@@ -66,38 +48,25 @@ struct RefineProgress {
 struct RefineOptions {
   // Size bound ε > 0: circumradii end at most ε·e^(−λ) in the background metric.
   double epsilon = 0;
-  // Shape bound B = circumradius / shortest edge. √2 is Ruppert's bound (smallest angle ≥ arcsin(1/(2√2)) ≈ 20.7°),
-  // guaranteed to terminate with boundaries whose corners are ≥ 60°; with SegmentRule::Chew, B ≥ √5/2 (Shewchuk, convex
-  // planar domains); on closed surfaces every B ≥ 1 terminates (smallest angle ≥ 30° at B = 1). Values below 1 are
-  // rejected.
+  // Shape bound B ≥ 1 = circumradius / shortest edge (smallest angle ≥ arcsin(1/(2B))). Default √2, Ruppert's bound;
+  // which B terminate where: docs/refinement.md §6.
   double ratioBound = 1.4142135623730951;
   // Conformal factor λ per INPUT vertex, interpolated at circumcentres; empty means λ ≡ 0 (uniform refinement).
   std::vector<double> lambda;
   BoundarySplit boundarySplit = BoundarySplit::Auto;
   SegmentRule segmentRule = SegmentRule::Ruppert;
-  // Euclidean background: split a bad-SHAPED triangle at Üngör's off-centre (the point on the bisector of its shortest
-  // edge that makes a triangle of ratio exactly B with it) instead of its circumcentre when that is nearer. Same
-  // bounds, usually fewer vertices when shape drives the refinement (grading); off by default, as the paper inserts
-  // circumcentres. Ignored in curved backgrounds.
+  // Euclidean background only: split a bad-SHAPED triangle at Üngör's off-centre instead of its circumcentre when
+  // that is nearer (docs/refinement.md §6). Same bounds.
   bool offCenters = false;
-  // Split a triangle that is bad by SIZE only (not by shape) at Rebay's frontal point instead of its circumcentre: on
-  // the bisector of its longest edge shared with a triangle that already meets its size target, at the apex of the
-  // isosceles triangle of circumradius ε·e^(−λ) on that edge (never beyond the circumcentre). Meshes grow from good
-  // regions in near-equilateral triangles of the target size: higher mean smallest angle, fewer vertices for the same
-  // ε. Same bounds (they are the stopping criterion) and the same termination argument (the point lies inside the
-  // bad triangle's empty circumdisk, at least the target size away from every vertex). All backgrounds.
+  // Split a triangle that is bad by SIZE only at Rebay's frontal point instead of its circumcentre, and serve the
+  // faces next to good ones first (docs/refinement.md §6). Same bounds; all backgrounds.
   bool frontal = false;
-  // Smoothing passes after refinement (vertex_smoothing.h). Each pass moves every inserted interior vertex within its
-  // star to the point, searched from the star's optimal-Delaunay point (`smoothingRule`: or its centroid average),
-  // that most raises its triangles' smallest angles, never lowering the star's smallest angle nor breaking the bounds;
-  // re-traces its input location; then restores Delaunay by flips and re-runs the refinement loop, so the output
-  // meets the bounds as without smoothing (they remain the stopping criterion). Raises the mean smallest angle
-  // (docs/refinement.md §6); 0 = the paper's algorithm, unsmoothed.
+  // Smoothing passes after refinement (vertex_smoothing.h); after each, Lawson flips and the refinement loop re-run,
+  // so the output meets the bounds as without smoothing. 0 = the paper's algorithm.
   int smoothingPasses = 0;
   SmoothingRule smoothingRule = SmoothingRule::OptimalDelaunay;
   // A loop counts as cocircular when every vertex of its layout lies within this distance (relative to the radius) of
-  // the fitted circle. 1e-8 is above the round-off of laying out a loop of 10⁶ edges by lengths and turning
-  // angles (headings accumulate ~10⁶ · 1e-16 rad, i.e. ~1e-10) and far below any visible departure from a circle.
+  // the fitted circle (docs/refinement.md §5).
   double circleTolerance = 1e-8;
   // Caps that stop a run on impossible parameters with a ConvergenceError instead of running away: insertions, and the
   // smallest circumradius a bad triangle may have (0 = 10⁻⁶ · min(ε·e^(−max λ), shortest input edge)).
@@ -108,6 +77,11 @@ struct RefineOptions {
   // Called every `progressEvery` insertions and at least every 2 s of refinement (may be empty).
   std::function<void(const RefineProgress&)> progress;
   std::int64_t progressEvery = 100000;
+
+  // What is wrong with these options ("" when they are valid), with the expected and the found value: ε finite and
+  // positive, 1 ≤ B < ∞, λ finite, maxInsertions > 0, smoothingPasses ≥ 0. (λ's count is checked against the input
+  // by refineDelaunay.)
+  std::string validate() const;
 };
 
 struct RefineStatistics {
@@ -141,8 +115,9 @@ struct RefineResult {
   RefineStatistics statistics;
 };
 
-// Refines `input` (validated first; InputError naming the element on bad lengths, bad λ, ε ≤ 0 or B < 1). Throws
-// ConvergenceError when a cap is hit, with the cap, the face and the numbers involved in the message.
+// Refines `input`. Throws InputError on bad input lengths, on options that fail RefineOptions::validate (its text), on
+// a λ count other than the input's vertex count, and on a boundary loop that BoundarySplit::Circle cannot split on a
+// circle; ConvergenceError when a cap is hit, with the cap, the face and the numbers involved in the message.
 RefineResult refineDelaunay(const intrinsic::IntrinsicTriangulation& input, const RefineOptions& options);
 
 }  // namespace conformesh::refine

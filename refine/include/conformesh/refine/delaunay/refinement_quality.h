@@ -1,9 +1,8 @@
 // refinement_quality.h — the quality figures reported after every refinement run (paper §6.1, Fig. 10): counts,
 // smallest angle, mean per-triangle smallest angle, largest and mean circumradius, share of triangles with an angle
 // under 30°, a histogram of all corner angles, and the checks the output must pass (Delaunay, Gauss–Bonnet).
-//
-// Circumradii are in the background metric of the triangulation (the uniformized domain). The same figures in the
-// original surface's metric need the pull-back, which is not part of this module.
+// Circumradii are in the background metric of the triangulation (the uniformized domain), not the original surface's.
+// Reads the triangulation only.
 #pragma once
 
 #include <vector>
@@ -27,6 +26,7 @@ struct QualityReport {
   double gaussBonnetResidual = 0;  // Σ curvature + K·area − 2πχ (round-off for any valid triangulation)
 };
 
+// The report of `tri` (any background, with or without boundary); angles in degrees, circumradii in its lengths' unit.
 QualityReport measureQuality(const intrinsic::IntrinsicTriangulation& tri);
 
 }  // namespace conformesh::refine

@@ -1,12 +1,8 @@
 // vertex_relocation.h — moving an inserted interior vertex of a refined intrinsic triangulation to another point of its
-// star, keeping every invariant of the refinement: edge lengths (background distances), the vertex's input location
-// (re-traced on the input), its signposts and its neighbours' signposts toward it.
-//
-// A vertex v the refinement inserted in the interior is a regular point of the constant-curvature background (angle sum
-// 2π), so its star lays out isometrically in the model (background_model.h) with v at origin() and v's signpost frame
-// as the canonical frame there: neighbour u_i = tip(h_i) sits at polar(ℓ(h_i), φ(h_i)). A new point p in that layout
-// gives the new lengths d(p, U_i); the outer edges of the star do not change. Input vertices (their frames anchor the
-// signposts, signposts.h) and boundary vertices are never moved.
+// star, laid out isometrically in the background model (background_model.h), keeping every invariant of the
+// refinement: the lengths of its edges (background distances in the layout), its input location (re-traced on the
+// input), its signposts and its neighbours' signposts toward it. Touches only the moved vertex's edges, location and
+// signposts; input vertices and boundary vertices are never moved. docs/refinement.md §6, *Smoothing*.
 #pragma once
 
 #include <optional>

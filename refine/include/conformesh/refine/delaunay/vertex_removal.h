@@ -1,13 +1,8 @@
-// vertex_removal.h — removing an inserted interior vertex from a refined intrinsic triangulation, keeping edge lengths
-// and signposts consistent. Chew's second algorithm deletes free vertices near a split segment
-// (delaunay_refinement.h, docs/refinement.md §6).
-//
-// An inserted interior vertex v is a regular point of the constant-curvature background (angle sum 2π), so its star
-// lays out isometrically in the straight-line model (background_model.h) as a star-shaped polygon with v in its kernel.
-// Intrinsic flips of v's edges bring its degree down to 3 (as geometry-central's removeInsertedVertex does); the three
-// faces then tile the triangle of their outer edges, which becomes one face with those edges' unchanged lengths. No
-// length, angle or signpost is recomputed: the outer halfedges keep their signposts, and at each neighbour the merged
-// corner is the sum of the two corners it replaces (v is flat), so the signpost invariant still holds.
+// vertex_removal.h — removing an inserted interior vertex from a refined intrinsic triangulation by isometric flips
+// down to degree 3 and the merge of its last three faces, keeping edge lengths and signposts consistent (no length,
+// angle or signpost is recomputed). Chew's second algorithm deletes free vertices near a split segment
+// (delaunay_refinement.h). Changes the triangulation and its signposts, compacted swap-with-last; the caller applies
+// the returned moves to its own per-element arrays. Why it works: docs/refinement.md §4, *Vertex removal*.
 #pragma once
 
 #include <functional>

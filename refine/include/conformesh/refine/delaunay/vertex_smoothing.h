@@ -1,13 +1,9 @@
 // vertex_smoothing.h — one smoothing pass over the free vertices of a refined intrinsic triangulation: each inserted
-// interior vertex is moved inside its star, laid out in the background model (vertex_relocation.h), to the point that
-// maximises the sum of its star triangles' smallest angles (their share of the mesh's mean smallest angle), searched
-// from the star's Optimal-Delaunay-Triangulation point (or area-weighted centroid); a move is made only when it raises
-// that sum and keeps the star's smallest angle and the refinement's size and shape bounds. Input locations and
-// signposts follow every move.
-//
-// This pass alone does not keep the Delaunay property nor prove the bounds: the refinement (RefineOptions::
-// smoothingPasses, delaunay_refinement.h) restores Delaunay by flips after each pass and re-runs its loop, whose
-// stopping criterion is the bounds. docs/refinement.md §6 states what is guaranteed.
+// interior vertex moves inside its star (vertex_relocation.h) to the point, searched from the star's optimal-Delaunay
+// point (or centroid average), that most raises the sum of its triangles' smallest angles, keeping the star's smallest
+// angle and the refinement's size and shape bounds. Changes the triangulation's lengths, the moved vertices' input
+// locations, λ and signposts; nothing else. Not Delaunay by itself: the refinement re-flips and re-runs its loop after
+// each pass (RefineOptions::smoothingPasses). docs/refinement.md §6, *Smoothing*.
 #pragma once
 
 #include <cmath>
@@ -22,9 +18,8 @@
 namespace conformesh::refine {
 
 enum class SmoothingRule {
-  // Optimal Delaunay triangulation update (Chen–Xu 2004, Alliez–Cohen-Steiner–Yvinec–Desbrun 2005): the area-weighted
-  // mean of the circumcentres of the star's triangles — the minimiser, over v's position, of the interpolation error
-  // of |x|² on the star. Centroids stand in for hyperbolic triangles without a circumcircle.
+  // Optimal Delaunay triangulation update (Chen–Xu 2004): the area-weighted mean of the star triangles' circumcentres
+  // (centroids for hyperbolic triangles without a circumcircle).
   OptimalDelaunay,
   // The area-weighted mean of the centroids of the star's triangles (the centroidal-Voronoi-like Laplacian rule).
   Centroid,
@@ -40,6 +35,9 @@ struct SmoothingOptions {
   // circumcentre; the exact test is the refinement's, re-run after the pass) and R ≤ B·(shortest edge).
   double epsilon = INFINITY;
   double ratioBound = 1.4142135623730951;
+
+  // What is wrong ("" when valid), expected vs found: ε > 0 (+∞ for no size bound), 1 ≤ B < ∞.
+  std::string validate() const;
 };
 
 struct SmoothingStatistics {
@@ -50,10 +48,10 @@ struct SmoothingStatistics {
 };
 
 // One pass, vertices in index order. `inputVertices` = the number of input vertices (never moved); `inputLambda` is λ
-// per input vertex (empty: λ ≡ 0, and angles are the background's; otherwise those of e^(2λ)·background, see
-// vertex_smoothing.cpp); `lambda` (per vertex) is re-interpolated at every moved vertex's new location.
-// Candidates: the rule's target, the points ½ and ¼ of the way to it, then a compass search (8 directions, step from
-// 1/8 of the shortest star edge, halved 3 times) from the best of them.
+// per input vertex (empty: λ ≡ 0, and angles are the background's; otherwise those of e^(2λ)·background); `lambda`
+// (per vertex) is re-interpolated at every moved vertex's new location. Candidates: the rule's target, the points ½ and
+// ¼ of the way to it, then a compass search from the best of them. Throws InputError with SmoothingOptions::validate's
+// text on invalid options.
 SmoothingStatistics smoothFreeVertices(intrinsic::IntrinsicTriangulation& tri, Signposts& sp,
                                        std::vector<InputLocation>& locations, std::vector<double>& lambda,
                                        int inputVertices, const InputSurface& input,

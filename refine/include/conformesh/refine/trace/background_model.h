@@ -1,12 +1,8 @@
 // background_model.h — points and tangent vectors of the three constant-curvature backgrounds as vectors of R³, in the
-// models where geodesics are straight: the plane in homogeneous coordinates (x, y, 1), the unit sphere (geodesics are
-// great circles = planes through 0; the gnomonic chart x/z, y/z makes them straight lines), and the upper sheet of the
-// hyperboloid x² + y² − z² = −1 (planes through 0; the Beltrami–Klein chart x/z, y/z makes them straight lines).
-//
-// In all three, the orientation of three points is the sign of det[a b c] (for the sphere: points in an open
-// hemisphere), so one set of exact predicates (robust_predicates.h) serves every geometry, and isometries are linear
-// maps, so barycentric coordinates taken in these vectors ("projective barycentric coordinates", i.e. gnomonic / Klein
-// coordinates, normalised to sum 1) do not depend on where a triangle was laid out.
+// models where geodesics are straight: the plane as (x, y, 1), the unit sphere (gnomonic chart x/z, y/z) and the upper
+// sheet of the hyperboloid x² + y² − z² = −1 (Beltrami–Klein chart x/z, y/z). Orientation is the sign of det[a b c] in
+// all three (robust_predicates.h), and barycentric coordinates in these vectors do not depend on where a triangle was
+// laid out (docs/refinement.md §2). A value type: no state beyond the background.
 #pragma once
 
 #include <optional>

@@ -1,12 +1,8 @@
-// robust_predicates.h — the sign of det[a b c] for three vectors of R³, exact for the doubles it is given.
-//
-// Every combinatorial decision of the refinement (which edge a geodesic trace leaves a triangle through, whether the
-// target lies inside a triangle) is the sign of such a determinant in the models of background_model.h: for (x, y, 1)
-// vectors it is the planar orient2d predicate, for unit vectors and hyperboloid vectors the orientation of the
-// spherical / hyperbolic triangle. A floating-point filter (Shewchuk-style error bound on the permanent) answers almost
-// always; when it cannot certify the sign, the determinant is recomputed exactly in Boost.Multiprecision integers.
-// Exactness is with respect to the coordinates as computed: the layout itself carries round-off, but every decision is
-// consistent with one planar (projective) configuration, so a trace can never take two contradictory branches.
+// robust_predicates.h — the sign of det[a b c] for three vectors of R³, exact for the doubles it is given: the
+// orientation predicate of every combinatorial decision of the refinement in the models of background_model.h (planar
+// orient2d for (x, y, 1), spherical / hyperbolic orientation for model vectors). A floating-point filter answers almost
+// always; otherwise the determinant is recomputed exactly in Boost.Multiprecision integers. Pure functions, no state.
+// docs/refinement.md §3.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,14 +1,9 @@
 // signposts.h — the direction of every halfedge in its tail's tangent space (Sharp–Soliman–Crane, "Navigating
-// intrinsic triangulations", SIGGRAPH 2019), kept correct through the flips and insertions of refinement.
-//
-// A signpost φ(h) is the angle of halfedge h at tail(h), measured counter-clockwise from that vertex's reference
-// direction; consecutive outgoing halfedges differ by the corner angle between them. Reference directions:
-//  * a vertex of the input triangulation: its input vertexHalfedge has angle 0 (so the input and the refined
-//    triangulation share the same tangent frame there — refinement never moves an input vertex);
-//  * an inserted vertex: the canonical frame (BackgroundModel::canonicalTangent) of the canonical layout of the input
-//    face that contains it (input_location.h), so that a direction at that vertex can be followed on the input.
-// Angles are stored reduced to [0, period(v)), with period = the angle sum for interior input vertices (2π after
-// uniformization) and 2π otherwise (a boundary vertex's fan spans less than 2π, so the reduction is unambiguous).
+// intrinsic triangulations", SIGGRAPH 2019), kept correct through the flips and splits of refinement, which these
+// functions wrap. A signpost φ(h) is the angle of h at tail(h), counter-clockwise from the vertex's reference
+// direction: its input vertexHalfedge for an input vertex, the canonical frame of the input face containing it for an
+// inserted vertex (input_location.h). Angles are reduced to [0, period(v)): the angle sum for interior input vertices,
+// 2π otherwise. docs/refinement.md §4.
 #pragma once
 
 #include <vector>
