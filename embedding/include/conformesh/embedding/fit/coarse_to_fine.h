@@ -1,25 +1,15 @@
 // coarse_to_fine.h — carrying the fitted positions of a coarse mesh to a finer mesh of the same surface through the
 // chart both were discretized on: each fine vertex's chart point is located in the coarse mesh's chart triangulation
-// and its position interpolated barycentrically from the coarse face's three fitted positions. The result is a start
-// for fitIsometricEmbedding (isometric_embedding.h) that uses no true positions, only the common parameter domain of
-// the two discretizations. It is flat inside each coarse face, where edge lengths do not tell a fine vertex to which
-// side to bend, so the fine fit should take a few weakly regularized steps before the pure fit (regularizerWeight =
-// 0.01, maxIterationsRegularized = 1; from w = 0 directly it popped vertices), and each level should refine h by at
-// most about 2× (45 → 141 directly popped vertices, 45 → 100 → 141 did not; the full continuation instead of one
-// step per stage also works, at 1.5× the cost): docs/embedding.md.
+// and its position interpolated barycentrically from the coarse face's three fitted positions — a start for
+// fitIsometricEmbedding (isometric_embedding.h) that uses no true positions. The carried start is flat inside each
+// coarse face, so the fine fit takes a few weakly regularized steps first, and each level refines h by at most about
+// 2× (why: docs/embedding.md, "Coarse-to-fine start").
 //
-// Charts handled (`ChartSurface`), as discretizeMetric (metric_discretization.h) builds them on the pole-free reference
-// surface of the chart (smooth_metric.h: referencePoint):
-//  * Plane: rectangle and disk charts; chart points (x, y, ·) in the plane (z ignored), coarse faces are plane
-//    triangles, barycentric coordinates the usual ones.
-//  * UnitSphere: sphere charts (the ellipsoid, the round sphere, Kerr–Newman). Chart points are points of the unit
-//    sphere, and the coarse faces are the spherical triangles whose edges are great arcs (the edges discretizeMetric
-//    measures). A point x lies in face (a, b, c) iff x = α a + β b + γ c with α, β, γ ≥ 0 (the face's cone from the
-//    centre), and its barycentric coordinates are (α, β, γ)/(α + β + γ): those of the central projection of x to the
-//    flat triangle abc. Locating on the sphere itself, not in (u, v), avoids the seam at u = 2π and the poles, where
-//    (u, v) triangles degenerate.
-// Periodic charts (cylinders, tori: grids glued across a seam, whose seam triangles have no single chart triangle
-// with wrapped coordinates) are not handled: chartTriangulation refuses them.
+// Charts (`ChartSurface`), as discretizeMetric builds them on the chart's pole-free reference surface:
+//  * Plane: rectangle and disk charts; chart points (x, y, ·), plane triangles, the usual barycentric coordinates.
+//  * UnitSphere: sphere charts; points of the unit sphere located in the cones of the spherical triangles (no seam,
+//    no pole), barycentric coordinates those of the central projection onto the flat triangle.
+// Periodic charts (cylinders, tori) are refused by chartTriangulation (InputError).
 #pragma once
 
 #include <array>

@@ -1,14 +1,8 @@
 // isometric_embedding.h — vertex positions in R³ whose straight edges have the lengths of an intrinsic triangulation,
 // fitted by Ceres (Levenberg–Marquardt, sparse normal Cholesky), with a verdict on whether the fit is isometric.
-//
-// Unknowns: x_i ∈ R³ per vertex. Residuals: r_e = (|x_i − x_j| − ℓ_e) / ℓ_e per edge (relative, so every edge counts
-// alike whatever its size). A closed genus-0 mesh has E = 3V − 6 edges: the system is square up to the six rigid
-// motions, and the lengths of a fine mesh of a convex surface determine the polyhedron (Cauchy–Dehn–Alexandrov
-// rigidity), so a mesh that comes from a surface in R³ is fitted to round-off. A metric with no isometric embedding
-// (the Kerr horizon at a/M > √3/2, Smarr 1973) leaves a residual no start removes, and the result says so.
-// Genus g ≥ 1 adds 6g equations: curve lengths then leave an O(ε²) residual even for an embedded torus (see
-// docs/embedding.md), so the verdict is about the length set, not the smooth surface.
-// docs/embedding.md explains the start (landmark MDS), the regularizer and the tolerance.
+// Residuals r_e = (|x_i − x_j| − ℓ_e) / ℓ_e per edge. A metric with no isometric embedding (the Kerr horizon at
+// a/M > √3/2) leaves a residual that no start removes, and the result says so. Why the system is (nearly) square,
+// the landmark-MDS start, the regularizer and the tolerance: docs/embedding.md, "Isometric embedding by Ceres".
 #pragma once
 
 #include <functional>

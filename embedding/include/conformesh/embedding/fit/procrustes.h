@@ -1,13 +1,7 @@
-// procrustes.h — rigid alignment of two point sets with known correspondence (orthogonal Procrustes / Kabsch): the
-// rotation R and translation t minimizing Σ |R p_i + t − q_i|², optionally allowing a reflection.
-//
-// A fitted embedding (isometric_embedding.h) is determined by the edge lengths only up to a rigid motion — and up to a
-// mirror image, since lengths cannot tell a surface from its reflection. Comparing it with the true surface therefore
-// means aligning first; the RMS and largest distance after alignment are the "Procrustes error".
-//
-// Method: Kabsch (1976), with the SVD of the 3×3 cross-covariance; the sign correction on the smallest singular
-// direction keeps det R = +1 (Umeyama 1991) unless reflections are allowed, in which case the better of the two is
-// taken.
+// procrustes.h — rigid alignment of two point sets with known correspondence (Kabsch 1976, with Umeyama's sign
+// correction): the rotation R and translation t minimizing Σ |R p_i + t − q_i|², optionally allowing a reflection
+// (edge lengths cannot tell a surface from its mirror image). Used to compare a fitted embedding with the true
+// surface: the RMS and largest distance after alignment are the "Procrustes error".
 #pragma once
 
 #include <vector>

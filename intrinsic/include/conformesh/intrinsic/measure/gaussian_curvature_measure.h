@@ -1,13 +1,8 @@
 // gaussian_curvature_measure.h — the paper's convergence check, intrinsic (eqs. 1, 3, 5 and Theorem 3.4): for each
-// vertex v of an output mesh T, a region B_v (a union of triangles around v), the discrete measure φ_T(B_v) = Σ angle
-// deficits (and, on a surface with boundary, boundary turnings) of the vertices in B_v, against the smooth measure
-// φ_M(η(B_v)) = ∫K dA (+ ∫k_g ds + Σ corner turnings along the boundary) over the part of the smooth surface that B_v
-// maps to, integrated with the metric's own K and Christoffel symbols — independently of the mesh's angles.
-//
-// T's vertices sit on the smooth surface as points of the chart's pole-free reference surface (smooth_metric.h:
-// referencePoint); each triangle of T maps to the reference triangle spanned by its three points (straight in the plane
-// or on the torus/cylinder chart, gnomonic — a geodesic triangle — on the reference sphere), which is the natural
-// projection η of the paper's §4.4 for the piecewise-linear parametrization it uses (§5.1.2).
+// vertex v of an output mesh T, the discrete measure φ_T(B_v) (angle deficits, and boundary turnings on a surface with
+// boundary, of the vertices in a region B_v) against the smooth measure φ_M(η(B_v)) = ∫K dA (+ ∫k_g ds + corner
+// turnings) over the part of the surface B_v maps to, integrated with the metric's own K — independently of the
+// mesh's angles. The projection η and the regions: docs/theory.md §5.
 #pragma once
 
 #include <functional>

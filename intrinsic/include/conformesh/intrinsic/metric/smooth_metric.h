@@ -1,13 +1,8 @@
-// smooth_metric.h — a Riemannian metric g(u,v) given over one chart: the 2×2 symmetric positive-definite matrix, its
-// first and second partial derivatives (analytic where a family provides them, else fourth-order finite differences),
-// the area element √det g and the Gaussian curvature K (analytic where known, else Brioschi's formula).
-//
-// Charts are rectangles [u0,u1]×[v0,v1], optionally periodic in u and/or v. Sphere- and disk-like surfaces use polar
-// charts (u an angle, periodic; v a colatitude or radius) whose edge v = v0 (and v = v1) is a coordinate pole: one
-// surface point. Nothing downstream evaluates g at a pole (the default gaussianCurvature takes its limit there, for the
-// output's per-vertex field): discretization and quadrature go through the pole-free
-// reference surface of the chart (the unit sphere or the plane disk, see referencePoint / chartPoint below and
-// docs/metrics.md), so poles cost no accuracy and produce no degenerate triangle fans.
+// smooth_metric.h — a Riemannian metric g(u,v) over one chart: the 2×2 symmetric positive-definite matrix, its first
+// and second partial derivatives (analytic where a family provides them, else fourth-order differences), the area
+// element √det g and the Gaussian curvature K (analytic where known, else Brioschi's formula). Charts are rectangles,
+// optionally periodic; polar charts have coordinate poles, which nothing downstream evaluates: discretization and
+// quadrature go through the chart's pole-free reference surface (docs/metrics.md §1, "Poles").
 #pragma once
 
 #include <optional>
