@@ -134,13 +134,18 @@ int run(const SweepArgs& a) {
                 "finished) on %d rank%s in %.1f s\n",
                 a.spec.c_str(), t.total, t.ok, t.failed, t.timeout, t.missing, out.ran, out.skipped, out.ranks,
                 out.ranks == 1 ? "" : "s", out.seconds);
+    auto order = [](const nlohmann::json& x) {
+      char b[32] = "-";  // fewer than two distinct points
+      if (x.is_number()) std::snprintf(b, sizeof b, "%.3f", x.get<double>());
+      return std::string(b);
+    };
     for (const auto& g : t.orders)
       if (!g["orders"].is_null())
         std::printf("  %-28s %zu levels: e_G ~ R^%s, mean R ~ V^%s, |area error| ~ R^%s\n",
                     g["group"].get<std::string>().c_str(), g["ok_levels"].get<size_t>(),
-                    g["orders"]["e_G_vs_mean_circumradius"].dump().c_str(),
-                    g["orders"]["mean_circumradius_vs_vertices"].dump().c_str(),
-                    g["orders"]["area_error_vs_mean_circumradius"].dump().c_str());
+                    order(g["orders"]["e_G_vs_mean_circumradius"]).c_str(),
+                    order(g["orders"]["mean_circumradius_vs_vertices"]).c_str(),
+                    order(g["orders"]["area_error_vs_mean_circumradius"]).c_str());
     for (const auto& w : written) std::printf("written: %s\n", w.c_str());
   }
   if (t.failed + t.timeout > 0)
