@@ -15,5 +15,6 @@ void registerUniformizeCommand(CLI::App& app);
 void registerRefineCommand(CLI::App& app);
 void registerLayoutCommand(CLI::App& app);
 void registerEmbedCommand(CLI::App& app);
+void registerSweepCommand(CLI::App& app);
 
 }  // namespace conformesh::apps

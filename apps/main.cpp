@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   conformesh::apps::registerRefineCommand(app);
   conformesh::apps::registerLayoutCommand(app);
   conformesh::apps::registerEmbedCommand(app);
+  conformesh::apps::registerSweepCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -20,7 +20,7 @@ jobs=${JOBS:-$(nproc)}
 # meshes that the tests read (made by others, so topology checks are not self-fulfilling).
 packages=(build-essential cmake libeigen3-dev libceres-dev libboost-graph-dev libgeographiclib-dev catch2
           libcli11-dev nlohmann-json3-dev libsuitesparse-dev libscotch-dev libopenblas0-pthread libhdf5-dev
-          python3-matplotlib libcgal-demo)
+          python3-matplotlib libcgal-demo libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,282 @@
+// End-to-end tests of `conformesh sweep` (docs/sweeps.md): faults recorded while the other cases complete (a bad
+// family parameter, a malformed mesh file, a case over --case-timeout), a bad spec rejected with exit 2 naming the
+// file, study and key, resumption without recomputing a finished case (counted in the attempt logs), the MPI table
+// equal to the serial table number for number, and a run killed with SIGKILL midway then rerun, ending with the
+// uninterrupted run's table, no truncated or temporary file, and no finished case computed twice.
+#include <catch2/catch.hpp>
+
+#include "support/cli_runner.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "conformesh/intrinsic/io/mesh_io.h"
+
+namespace fs = std::filesystem;
+using conformesh::testing::runConformesh;
+using conformesh::testing::slurp;
+using nlohmann::json;
+
+namespace {
+
+json strip(const json& x) {  // the record minus its wall-clock fields
+  if (x.is_object()) {
+    json o = json::object();
+    for (const auto& [k, v] : x.items())
+      if (k != "seconds" && k != "wall_seconds") o[k] = strip(v);
+    return o;
+  }
+  if (x.is_array()) {
+    json a = json::array();
+    for (const auto& v : x) a.push_back(strip(v));
+    return a;
+  }
+  return x;
+}
+
+json readJson(const fs::path& p) {
+  return json::parse(slurp(p));
+}
+
+int attempts(const fs::path& dir, const std::string& id) {
+  std::ifstream in(dir / "cases" / id / "attempts.log");
+  int n = 0;
+  for (std::string line; std::getline(in, line);) n += line.rfind("START ", 0) == 0;
+  return n;
+}
+
+// Every file in DIR is complete: no temporary names, every JSON parses, every PLY reads.
+void requireNoTruncatedFile(const fs::path& dir) {
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    const std::string name = e.path().filename().string();
+    INFO(e.path());
+    REQUIRE(name.find(".tmp-") == std::string::npos);
+    if (e.path().extension() == ".json") REQUIRE_NOTHROW(json::parse(slurp(e.path())));
+    if (e.path().extension() == ".ply") REQUIRE(conformesh::intrinsic::readMesh(e.path().string()).faces.size() > 0);
+  }
+}
+
+fs::path writeSpec(const fs::path& dir, const std::string& name, const json& spec) {
+  const fs::path p = dir / name;
+  std::ofstream(p) << spec.dump(1);
+  return p;
+}
+
+// 14 small cases (each well under a second): two ellipsoids and the sphere, three eps, smoothing 0 and 1.
+json equalSpec() {
+  return {{"studies",
+           {{{"input", "ellipsoid"}, {"params", {{"f", {0.2, 0.3}}}}, {"eps", {0.1, 0.07, 0.05}},
+             {"options", {{"t0-resolution", 4}}}},
+            {{"input", "sphere"}, {"eps", {0.1, 0.07, 0.05}}, {"options", {{"t0-resolution", 4}, {"smoothing", {0, 1}}}}},
+            {{"input", "torus"}, {"eps", {0.15, 0.1}}, {"options", {{"t0-resolution", 6}}}}}}};
+}
+
+std::string mpirun(int n) {
+  return std::string(CONFORMESH_MPIEXEC) + " --allow-run-as-root --oversubscribe -n " + std::to_string(n) + " ";
+}
+
+}  // namespace
+
+TEST_CASE("sweep: a bad input and a timeout are recorded while every other case completes, and a rerun skips them") {
+  const fs::path dir = conformesh::testing::scratchDir() / "faults";
+  fs::create_directories(dir);
+  std::ofstream(dir / "broken.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n";  // truncated: 2 of 3 vertices, no face
+  const json spec = {{"studies",
+                      {{{"input", "ellipsoid"}, {"params", {{"f", {0.3, 2.0}}}}, {"eps", {0.1, 0.07}},
+                        {"options", {{"t0-resolution", 4}}}},
+                       {{"input", "broken.off"}, {"eps", 0.1}},
+                       {{"input", "sphere"}, {"eps", 0.003}, {"options", {{"no-check", true}}}}}}};
+  const fs::path specPath = writeSpec(dir, "faults.json", spec), out = dir / "out";
+  const std::string cmd = "-q sweep " + specPath.string() + " -o " + out.string() + " --case-timeout 2 --no-plot";
+  auto r = runConformesh(cmd);
+  INFO(r.err);
+  CHECK(r.status == 1);  // a case failed: the table is written and the status says so
+  const json table = readJson(out / "table.json");
+  REQUIRE(table.size() == 6);
+  std::map<std::string, int> byStatus;
+  for (const json& rec : table) ++byStatus[rec["status"]];
+  CHECK(byStatus["ok"] == 2);
+  CHECK(byStatus["failed"] == 3);  // f = 2.0 twice, the broken mesh once
+  CHECK(byStatus["timeout"] == 1);
+  for (const json& rec : table) {
+    const std::string status = rec["status"];
+    if (status == "ok") {
+      CHECK(rec["quality"]["min_angle_deg"].get<double>() > 20.7);  // the shape bound B = sqrt 2 in the metric
+      CHECK(rec["gaussian_curvature_measure"]["mean_abs_error"].get<double>() < 0.05);
+      CHECK(fs::exists(out / "cases" / rec["id"].get<std::string>() / "mesh.ply"));
+    } else if (rec["case"]["kind"] == "mesh") {
+      CHECK(rec["error_kind"] == "input");
+      CHECK(rec["error"].get<std::string>().find("broken.off") != std::string::npos);
+    } else if (status == "failed") {
+      CHECK(rec["error"].get<std::string>().find("flattening") != std::string::npos);
+      CHECK(rec["where"] == "building metric ellipsoid");
+    } else {
+      CHECK(rec["error"].get<std::string>().find("--case-timeout 2") != std::string::npos);
+      CHECK(rec["wall_seconds"].get<double>() < 10);
+      CHECK(rec["where"].get<std::string>().find("refin") != std::string::npos);  // killed while refining
+    }
+  }
+  // The CSV has a header and one row per case.
+  const std::string csv = slurp(out / "table.csv");
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 7);
+  requireNoTruncatedFile(out);
+
+  // A rerun computes nothing: every case has its record (failed and timeout ones too, without --retry-failed).
+  r = runConformesh(cmd + " --json");
+  CHECK(r.status == 1);
+  const auto j = json::parse(r.out.substr(0, r.out.rfind('}') + 1));
+  CHECK(j["ran"] == 0);
+  CHECK(j["skipped"] == 6);
+  for (const json& rec : table) CHECK(attempts(out, rec["id"]) == 1);
+  CHECK(strip(readJson(out / "table.json")) == strip(table));
+}
+
+TEST_CASE("sweep: case ids are stable and a bad spec is rejected with exit 2 naming the file, study and key") {
+  const fs::path dir = conformesh::testing::scratchDir() / "spec";
+  fs::create_directories(dir);
+  const fs::path good = writeSpec(dir, "good.json", equalSpec());
+  auto a = runConformesh("-q sweep " + good.string() + " -o " + (dir / "o").string() + " --list");
+  REQUIRE(a.status == 0);
+  // The same cases written in another order of keys and with the default options spelt out give the same ids.
+  json other = equalSpec();
+  other["studies"][0]["options"]["segment_rule"] = "ruppert";
+  other["studies"][0]["options"]["smoothing"] = 0;
+  auto b = runConformesh("-q sweep " + writeSpec(dir, "other.json", other).string() + " -o " + (dir / "o").string() +
+                         " --list");
+  REQUIRE(b.status == 0);
+  const json ca = json::parse(a.out), cb = json::parse(b.out);
+  REQUIRE(ca.size() == 14);
+  std::set<std::string> ids;
+  for (size_t i = 0; i < ca.size(); ++i) {
+    CHECK(ca[i]["id"] == cb[i]["id"]);
+    ids.insert(ca[i]["id"].get<std::string>());
+  }
+  CHECK(ids.size() == 14);
+
+  json bad = equalSpec();
+  bad["studies"][1]["options"]["smoothnig"] = 1;
+  auto r = runConformesh("-q sweep " + writeSpec(dir, "bad.json", bad).string() + " -o " + (dir / "o").string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("bad.json: studies[1].options.smoothnig: unknown option") != std::string::npos);
+  bad = equalSpec();
+  bad["studies"][2]["eps"] = {0.1, -1};
+  r = runConformesh("-q sweep " + writeSpec(dir, "bad2.json", bad).string() + " -o " + (dir / "o").string());
+  CHECK(r.status == 2);
+  CHECK(r.err.find("bad2.json: studies[2].eps[1]: expected a positive number") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "o"));  // nothing run, nothing written
+}
+
+#ifdef CONFORMESH_MPIEXEC
+TEST_CASE("sweep: under mpirun -n 3 the table equals the serial table number for number") {
+  const fs::path dir = conformesh::testing::scratchDir() / "mpi";
+  fs::create_directories(dir);
+  const fs::path spec = writeSpec(dir, "equal.json", equalSpec());
+  auto s = runConformesh("-q sweep " + spec.string() + " -o " + (dir / "serial").string() + " --no-plot");
+  INFO(s.err);
+  REQUIRE(s.status == 0);
+  const std::string cmd = "timeout 120 " + mpirun(3) + CONFORMESH_CLI + " -q sweep " + spec.string() + " -o " +
+                          (dir / "mpi").string() + " --no-plot > " + (dir / "mpi.out").string() + " 2>&1";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const json serial = readJson(dir / "serial" / "table.json"), mpi = readJson(dir / "mpi" / "table.json");
+  REQUIRE(serial.size() == 14);
+  REQUIRE(mpi.size() == 14);
+  for (size_t i = 0; i < serial.size(); ++i) {
+    INFO(serial[i]["id"]);
+    CHECK(strip(mpi[i]) == strip(serial[i]));
+  }
+  CHECK(strip(readJson(dir / "mpi" / "orders.json")) == strip(readJson(dir / "serial" / "orders.json")));
+  // Both workers took cases (rank 0 computes none).
+  std::set<std::string> ranks;
+  for (const json& rec : mpi) {
+    const std::string log = slurp(dir / "mpi" / "cases" / rec["id"].get<std::string>() / "attempts.log");
+    ranks.insert(log.substr(log.find("rank=")));
+  }
+  CHECK(ranks == std::set<std::string>{"rank=1\n", "rank=2\n"});
+}
+
+namespace {
+// SIGKILL to every process of session `sid` (mpirun started by setsid, its ranks and their case processes).
+int killSession(pid_t sid) {
+  int killed = 0;
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string name = e.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream stat(e.path() / "stat");
+    std::string s((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+    const auto close = s.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream rest(s.substr(close + 2));
+    std::string state;
+    long ppid, pgrp, session;
+    rest >> state >> ppid >> pgrp >> session;
+    if (session == sid && ::kill(std::stoi(name), SIGKILL) == 0) ++killed;
+  }
+  return killed;
+}
+}  // namespace
+
+TEST_CASE("sweep: killed with SIGKILL midway under MPI, then rerun, ends with the uninterrupted table") {
+  const fs::path dir = conformesh::testing::scratchDir() / "kill";
+  fs::create_directories(dir);
+  json spec = equalSpec();
+  spec["studies"][0]["eps"] = {0.07, 0.05, 0.035};  // a little longer, so that the kill lands midway
+  const fs::path specPath = writeSpec(dir, "kill.json", spec), out = dir / "out";
+  auto ref = runConformesh("-q sweep " + specPath.string() + " -o " + (dir / "reference").string() + " --no-plot");
+  REQUIRE(ref.status == 0);
+  const json reference = readJson(dir / "reference" / "table.json");
+
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::setsid();
+    const std::string cmd = mpirun(3) + CONFORMESH_CLI + " -q sweep " + specPath.string() + " -o " + out.string() +
+                            " --no-plot > " + (dir / "killed.out").string() + " 2>&1";
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Wait until some cases have their records, then kill the whole job at once.
+  auto records = [&] {
+    int n = 0;
+    if (fs::exists(out / "cases"))
+      for (const auto& e : fs::directory_iterator(out / "cases")) n += fs::exists(e.path() / "record.json");
+    return n;
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  while (records() < 4 && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  CHECK(killSession(child) >= 3);  // sh / mpirun, two or three ranks, a case process
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  std::set<std::string> finishedBeforeKill;
+  for (const auto& e : fs::directory_iterator(out / "cases"))
+    if (fs::exists(e.path() / "record.json")) finishedBeforeKill.insert(e.path().filename().string());
+  INFO(finishedBeforeKill.size() << " of 14 cases finished before the kill");
+  REQUIRE(finishedBeforeKill.size() >= 4);
+  REQUIRE(finishedBeforeKill.size() < 14);
+  CHECK_FALSE(fs::exists(out / "table.json"));
+
+  const std::string rerun = "timeout 120 " + mpirun(3) + CONFORMESH_CLI + " -q sweep " + specPath.string() + " -o " +
+                            out.string() + " --no-plot > " + (dir / "rerun.out").string() + " 2>&1";
+  REQUIRE(std::system(rerun.c_str()) == 0);
+  const json table = readJson(out / "table.json");
+  REQUIRE(table.size() == reference.size());
+  for (size_t i = 0; i < table.size(); ++i) CHECK(strip(table[i]) == strip(reference[i]));
+  requireNoTruncatedFile(out);
+  for (const json& rec : table) {
+    const std::string id = rec["id"];
+    if (finishedBeforeKill.count(id))
+      CHECK(attempts(out, id) == 1);  // not computed again
+    else
+      CHECK(attempts(out, id) >= 1);
+  }
+}
+#endif
