@@ -266,8 +266,8 @@ TEST_CASE("a uniformized genus-2 surface: every A_h is its evaluated crossing wo
   CHECK(words >= 8);
   // A_h and the word differ by the vertex relations' residuals along the tree path: each the flow's angle-sum error
   // (≤ 1e-13) amplified by the norms of the face maps along the path (entries ≤ 15 here): ≲ 1e-11, held to 1e-10
-  // (measured 2e-14). w·w⁻¹ (words of ≤ 3 letters here): the round-off of ≤ 6 products of matrices of entries ≤ 15,
-  // productRoundOff(6, 15) ≈ 6e-7 as a bound, 2e-13 measured — 1e-10 is the tighter of the two.
+  // (measured 2e-14). w·w⁻¹ (words of ≤ 3 letters here): ≤ 6 products of matrices of entries ≤ 15, whose a-priori
+  // round-off bound productRoundOff(6, 15) ≈ 6e-7 is loose; held to 1e-10 as a regression bound (measured 2e-13).
   CHECK(worst < 1e-10);
   CHECK(worstInverse < 1e-10);
 }
