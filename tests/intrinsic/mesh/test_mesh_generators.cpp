@@ -286,39 +286,152 @@ TEST_CASE("genus surface: counts, χ = 2 − 2g, right isosceles triangles, exac
   }
 }
 
-TEST_CASE("knownAnswers agree with the topology measured and the areas computed on the meshes", "[known]") {
-  auto check = [](const MeshData& d, const KnownAnswers& known, double areaTolerance) {
+TEST_CASE("knownAnswers against closed forms; mesh areas against them with bounds derived from the construction",
+          "[known]") {
+  constexpr double eps = 2.220446049250313e-16;
+  // Round-off of a mesh area: Σ of F positive face areas, each from Heron's formula to a few ulps: ≤ 16·F·ε relative.
+  auto roundOff = [&](const IntrinsicTriangulation& tri) { return 16.0 * tri.mesh.nFaces() * eps; };
+  // Topology from the mesh against the closed form, and the total curvature 2πχ to round-off (V angle sums of a few
+  // ulps of 2π each: 8·V·ε·2π).
+  auto checkTopology = [&](const MeshData& d, const KnownAnswers& known, int chi, int genus, int loops) {
     CAPTURE(d.source);
+    CHECK(known.eulerCharacteristic == chi);
+    CHECK(known.genus == genus);
+    CHECK(known.boundaryLoops == loops);
     const Topology t = topologyOf(d);
-    REQUIRE(t.chi == known.eulerCharacteristic);
-    REQUIRE(t.genus == known.genus);
-    REQUIRE(t.boundaryLoops == known.boundaryLoops);
-    REQUIRE(std::abs(totalArea(toTriangulation(d)) - known.area) < areaTolerance * known.area);
+    CHECK(t.chi == chi);
+    CHECK(t.genus == genus);
+    CHECK(t.boundaryLoops == loops);
+    const IntrinsicTriangulation tri = toTriangulation(d);
+    const CurvatureTotals totals = curvatureTotals(tri);
+    CHECK(std::abs(totals.interiorDeficit + totals.boundaryTurning - 2 * kPi * chi) <=
+          8.0 * tri.mesh.nVertices() * eps * 2 * kPi);
   };
-  // Exact areas to round-off; smooth-limit areas to the discretization error of these sizes (O(h²) ≈ 10⁻³).
-  IcosphereOptions ico{6, 0.8};
-  check(makeIcosphere(ico), knownAnswers(ico), 2e-3);
-  REQUIRE_FALSE(knownAnswers(ico).areaIsExact);
-  TorusOptions torus;
-  torus.n = 150;
-  torus.m = 60;
-  check(makeTorus(torus), knownAnswers(torus), 2e-3);
-  GenusSurfaceOptions genus;
-  genus.genus = 3;
-  genus.resolution = 2;
-  genus.cellSize = 1.3;
-  check(makeGenusSurface(genus), knownAnswers(genus), kRoundOff);
-  REQUIRE(knownAnswers(genus).areaIsExact);
-  DiskOptions disk{40, 2.0};
-  check(makeDisk(disk), knownAnswers(disk), 2e-3);
-  AnnulusOptions annulus;
-  annulus.rings = 30;
-  check(makeAnnulus(annulus), knownAnswers(annulus), 2e-3);
-  FlatTorusOptions flat;
-  flat.omega1 = {1.5, 0.2};
-  flat.omega2 = {-0.4, 1.1};
-  check(makeFlatTorus(flat), knownAnswers(flat), kRoundOff);
-  REQUIRE(knownAnswers(flat).areaIsExact);
+
+  SECTION("icosphere: 4πR², the inscribed polyhedron below it by at most Σ A_f ρ_f²/(R² − ρ_f²)") {
+    const double R = 0.8;
+    const IcosphereOptions ico{6, R};
+    const KnownAnswers known = knownAnswers(ico);
+    CHECK(std::abs(known.area - 4 * kPi * R * R) <= 4 * eps * known.area);
+    CHECK_FALSE(known.areaIsExact);
+    const MeshData d = makeIcosphere(ico);
+    checkTopology(d, known, 2, 0, 0);
+    // The polyhedron is convex and inscribed, so its area is below the sphere's (Cauchy: surface area is monotone
+    // under inclusion of convex bodies). Each face f lies in a plane at distance d_f = √(R² − ρ_f²) from the centre
+    // (ρ_f its circumradius); radial projection onto the sphere has area factor R² d_f / |x|³ ≤ R²/d_f², so the
+    // spherical triangles it tiles the sphere with satisfy A_s ≤ A_f R²/(R² − ρ_f²). Hence
+    //   Σ A_f < 4πR² ≤ Σ A_f R²/(R² − ρ_f²),
+    // an O(h²) bracket computed from the mesh itself.
+    const IntrinsicTriangulation tri = toTriangulation(d);
+    double area = 0, upper = 0;
+    for (int f = 0; f < tri.mesh.nFaces(); ++f) {
+      const double a = faceArea(tri, f), rho = faceCircumradius(tri, f);
+      area += a;
+      upper += a * R * R / (R * R - rho * rho);
+    }
+    const double sphere = 4 * kPi * R * R;
+    INFO("deficit " << (sphere - area) / sphere << ", bracket " << (upper - area) / sphere);
+    CHECK(area < sphere);
+    CHECK(sphere <= upper * (1 + roundOff(tri)));
+    CHECK(std::abs(totalArea(tri) - area) <= roundOff(tri) * area);
+  }
+
+  SECTION("torus of revolution: 4π²Rr, the mesh area converging at order 2 and extrapolating to it") {
+    TorusOptions o;
+    o.majorRadius = 1.0;
+    o.minorRadius = 0.4;
+    const double exact = 4 * kPi * kPi * o.majorRadius * o.minorRadius;
+    CHECK(std::abs(knownAnswers(o).area - exact) <= 4 * eps * exact);
+    CHECK_FALSE(knownAnswers(o).areaIsExact);
+    // Grids refined by 2 at fixed n/m = R/r: the area A(h) = A − c h² + O(h⁴) (the triangulation is symmetric under
+    // (u, v) → (−u, −v), so no odd powers). Order fitted over three levels; the Richardson value (4A(h/2) − A(h))/3
+    // then has an O(h⁴) error, bounded by the difference of two successive Richardson values (which falls by 16).
+    std::vector<double> h, err, areas;
+    for (int k : {1, 2, 4, 8}) {
+      o.n = 25 * k;
+      o.m = 10 * k;
+      const MeshData d = makeTorus(o);
+      if (k == 4) checkTopology(d, knownAnswers(o), 0, 1, 0);
+      areas.push_back(totalArea(toTriangulation(d)));
+      h.push_back(1.0 / k);
+      err.push_back(exact - areas.back());
+    }
+    const double order = fitLogLogSlope(h, err);
+    const double r1 = (4 * areas[2] - areas[1]) / 3, r2 = (4 * areas[3] - areas[2]) / 3;
+    INFO("errors " << err[0] << " … " << err[3] << ", order " << order << ", Richardson " << r1 - exact << ", "
+                   << r2 - exact);
+    for (double e : err) CHECK(e > 0);
+    CHECK(order > 1.95);
+    CHECK(order < 2.05);
+    // With r = A + d h⁴ + O(h⁶): r1 − A = 16 (r2 − A) to leading order, so |r2 − A| = |r1 − r2|/15; a factor 2 for the
+    // O(h⁶) terms.
+    CHECK(std::abs(r2 - exact) <= 2 * std::abs(r2 - r1) / 15);
+  }
+
+  SECTION("genus-g slab: cellSize²·(2(3W − g) + 2(W + 3) + 4g) exactly") {
+    GenusSurfaceOptions o;
+    o.genus = 3;
+    o.resolution = 2;
+    o.cellSize = 1.3;
+    const int W = 2 * o.genus + 1;
+    const double exact = o.cellSize * o.cellSize * (2 * (3 * W - o.genus) + 2 * (W + 3) + 4 * o.genus);  // 68·1.69
+    CHECK(std::abs(knownAnswers(o).area - exact) <= 4 * eps * exact);
+    CHECK(knownAnswers(o).areaIsExact);
+    const MeshData d = makeGenusSurface(o);
+    checkTopology(d, knownAnswers(o), 2 - 2 * o.genus, o.genus, 0);
+    const IntrinsicTriangulation tri = toTriangulation(d);
+    CHECK(std::abs(totalArea(tri) - exact) <= roundOff(tri) * exact);
+  }
+
+  SECTION("disk: πR²; the mesh is the inscribed 6N-gon, 3N R² sin(π/3N), below πR² by at most πR²(π/3N)²/6") {
+    const DiskOptions o{40, 2.0};
+    const double R = o.radius, N = o.rings;
+    CHECK(std::abs(knownAnswers(o).area - kPi * R * R) <= 4 * eps * kPi * R * R);
+    CHECK_FALSE(knownAnswers(o).areaIsExact);
+    const MeshData d = makeDisk(o);
+    checkTopology(d, knownAnswers(o), 1, 0, 1);
+    const IntrinsicTriangulation tri = toTriangulation(d);
+    const double polygon = 3 * N * R * R * std::sin(kPi / (3 * N));
+    CHECK(std::abs(totalArea(tri) - polygon) <= roundOff(tri) * polygon);
+    // sin x ≥ x − x³/6: 0 < πR² − polygon ≤ πR² x²/6, x = π/3N.
+    const double x = kPi / (3 * N);
+    CHECK(polygon < kPi * R * R);
+    CHECK(kPi * R * R - polygon <= kPi * R * R * x * x / 6);
+  }
+
+  SECTION("annulus: π(r2² − r1²); the mesh is the outer n-gon minus the inner one, (n/2) sin(2π/n)(r2² − r1²)") {
+    AnnulusOptions o;
+    o.rings = 30;
+    const double r1 = o.innerRadius, r2 = o.outerRadius;
+    const double exact = kPi * (r2 * r2 - r1 * r1);
+    CHECK(std::abs(knownAnswers(o).area - exact) <= 4 * eps * exact);
+    CHECK_FALSE(knownAnswers(o).areaIsExact);
+    // n = max(3, round(2πN / ln(r2/r1))), written here.
+    const int n = std::max(3, static_cast<int>(std::lround(2 * kPi * o.rings / std::log(r2 / r1))));
+    CHECK(annulusRingVertexCount(o) == n);
+    const MeshData d = makeAnnulus(o);
+    checkTopology(d, knownAnswers(o), 0, 0, 2);
+    const IntrinsicTriangulation tri = toTriangulation(d);
+    const double polygons = 0.5 * n * std::sin(2 * kPi / n) * (r2 * r2 - r1 * r1);
+    CHECK(std::abs(totalArea(tri) - polygons) <= roundOff(tri) * polygons);
+    // (n/2) sin θ = π sin θ/θ with θ = 2π/n: 0 < exact − polygons ≤ exact θ²/6.
+    const double theta = 2 * kPi / n;
+    CHECK(polygons < exact);
+    CHECK(exact - polygons <= exact * theta * theta / 6);
+  }
+
+  SECTION("flat torus: |Im(ω̄1 ω2)| exactly, with every angle sum 2π") {
+    FlatTorusOptions o;
+    o.omega1 = {1.5, 0.2};
+    o.omega2 = {-0.4, 1.1};
+    const double exact = 1.5 * 1.1 - 0.2 * (-0.4);  // 1.73
+    CHECK(std::abs(knownAnswers(o).area - exact) <= 4 * eps * exact);
+    CHECK(knownAnswers(o).areaIsExact);
+    const MeshData d = makeFlatTorus(o);
+    checkTopology(d, knownAnswers(o), 0, 1, 0);
+    const IntrinsicTriangulation tri = toTriangulation(d);
+    CHECK(std::abs(totalArea(tri) - exact) <= roundOff(tri) * exact);
+  }
 }
 
 TEST_CASE("genus surface: 10⁶ faces at g = 2, N = 100", "[genus][size]") {

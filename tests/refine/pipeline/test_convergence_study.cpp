@@ -4,7 +4,8 @@
 // and Gauss–Bonnet holds to 1e-9. The mean smallest angle is not bounded by any theorem; with the default smoothing
 // pass (ConvergenceOptions::remesh.refinement.smoothingPasses = 1, vertex_smoothing.h) every mesh of the studies in
 // docs/studies.md has it ≥ 46.7° (unsmoothed it scatters by ±1° between nearby ε and dips to 44.7°–46°), so each mesh
-// is held to issue 6's 46°, and the sweep's average to the paper's 46.5°.
+// is held to issue 6's 46°, and the sweep's average to the paper's 46.5°. Both are regression bounds calibrated on the
+// sweeps of docs/studies.md (no theorem bounds the mean smallest angle above the refinement's 20.7°), not derived.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -32,12 +33,14 @@ TEST_CASE("convergence sweeps on the ellipsoid and the Kerr horizon at a/M = 0.9
     for (const ConvergenceLevel& L : s.levels) {
       INFO(L.vertices << " vertices");
       CHECK(L.quality.minAngleDeg >= 20.7);
-      CHECK(L.quality.meanMinAngleDeg >= 46);
+      const double kRegressionMeanMinAngleDeg = 46;  // calibrated on docs/studies.md's sweeps (see above)
+      CHECK(L.quality.meanMinAngleDeg >= kRegressionMeanMinAngleDeg);
       meanOfMeans += L.quality.meanMinAngleDeg / s.levels.size();
       CHECK(L.invertedTriangles == 0);
       CHECK(std::abs(L.quality.gaussBonnetResidual) < 1e-9);
     }
-    CHECK(meanOfMeans >= 46.5);
+    const double kRegressionSweepMeanDeg = 46.5;  // the paper's figure, met by docs/studies.md's sweeps
+    CHECK(meanOfMeans >= kRegressionSweepMeanDeg);
   }
 }
 
