@@ -18,6 +18,10 @@ docs/python.md is the reference.
 from . import _conformesh
 from ._conformesh import (
     ConvergenceError,
+    ConvergenceResult,
+    LayoutResult,
+    convergence,
+    layout,
     InputError,
     RemeshResult,
     Triangulation,
@@ -33,6 +37,10 @@ __version__ = _conformesh.__version__
 
 __all__ = [
     "ConvergenceError",
+    "ConvergenceResult",
+    "LayoutResult",
+    "convergence",
+    "layout",
     "InputError",
     "RemeshResult",
     "Triangulation",

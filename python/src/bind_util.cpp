@@ -87,7 +87,8 @@ std::vector<double> realsFromArray(const py::handle& obj, const std::string& wha
     inputError(what + ": expected a real array (float64, float32 or integer), got dtype " + dtypeName(a));
   checkShape(a, what, cols);
   std::vector<double> out(static_cast<std::size_t>(a.shape(0)) * cols);
-  const char* row = cols == 3 && what.rfind("L", 0) == 0 ? "face" : "row";
+  const bool perFace = what.size() >= 3 && what.compare(what.size() - 3, 3, ": L") == 0;
+  const char* row = perFace ? "face" : "row";
   if (kind == 'f' && a.itemsize() == 8)
     readReals<double>(a, out, what, row);
   else

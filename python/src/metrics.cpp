@@ -232,13 +232,15 @@ a family (metrics.family), a sampled field (metrics.sampled, metrics.read_field)
   c.def(
       "gaussian_curvature",
       [](const Metric& x, const py::handle& u, const py::handle& v) {
-        return evaluate(u, v, 1, [&](double a, double b, double* o) { o[0] = x.metric->gaussianCurvature(a, b); })[0];
+        return py::object(
+            evaluate(u, v, 1, [&](double a, double b, double* o) { o[0] = x.metric->gaussianCurvature(a, b); })[0]);
       },
       py::arg("u"), py::arg("v"), "Gaussian curvature K at chart points (closed form where known, else Brioschi).");
   c.def(
       "area_element",
       [](const Metric& x, const py::handle& u, const py::handle& v) {
-        return evaluate(u, v, 1, [&](double a, double b, double* o) { o[0] = x.metric->areaElement(a, b); })[0];
+        return py::object(
+            evaluate(u, v, 1, [&](double a, double b, double* o) { o[0] = x.metric->areaElement(a, b); })[0]);
       },
       py::arg("u"), py::arg("v"), "sqrt(det g) at chart points: the area is its integral over the chart.");
   c.def(

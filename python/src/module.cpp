@@ -20,4 +20,5 @@ PYBIND11_MODULE(_conformesh, m) {
   py::module_ metrics = m.def_submodule("metrics", "Smooth metrics: families, sampled fields.");
   conformesh::python::bindMetrics(metrics);
   conformesh::python::bindPipelines(m);
+  conformesh::python::bindStudies(m);
 }
