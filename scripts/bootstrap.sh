@@ -17,10 +17,12 @@ jobs=${JOBS:-$(nproc)}
 # SuiteSparse (CHOLMOD) and SCOTCH (nested dissection) for the Ricci-flow Newton solver; OpenBLAS, which Debian's alternatives then select
 # as the BLAS that CHOLMOD's supernodal factorization calls (faster than the reference BLAS or ATLAS's generic build:
 # docs/benchmarks.md); HDF5 for sampled metric fields; matplotlib for plots; libcgal-demo for CGAL's data set of real
-# meshes that the tests read (made by others, so topology checks are not self-fulfilling).
+# meshes that the tests read (made by others, so topology checks are not self-fulfilling); pybind11, NumPy and pytest for
+# the Python package (docs/python.md), built for Debian's /usr/bin/python3.
 packages=(build-essential cmake libeigen3-dev libceres-dev libboost-graph-dev libgeographiclib-dev catch2
           libcli11-dev nlohmann-json3-dev libsuitesparse-dev libscotch-dev libopenblas0-pthread libhdf5-dev
-          python3-matplotlib libcgal-demo libopenmpi-dev openmpi-bin)
+          python3-matplotlib libcgal-demo libopenmpi-dev openmpi-bin pybind11-dev python3-pybind11 python3-numpy
+          python3-pytest)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -32,7 +34,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONFORMESH_BUILD_PYTHON=ON
 cmake --build "$build" -j "$jobs"
 
 case "$mode" in
