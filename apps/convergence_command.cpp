@@ -13,8 +13,8 @@
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/pipeline/convergence_study.h"
-#include "report_json.h"
 
 namespace conformesh::apps {
 
@@ -105,10 +105,10 @@ nlohmann::json levelJson(const refine::ConvergenceLevel& L, bool extrinsic, cons
                           {"vertices", L.vertices},
                           {"triangles", L.triangles},
                           {"eps", L.epsilon},
-                          {"quality", qualityJson(L.quality)},
+                          {"quality", refine::qualityJson(L.quality)},
                           {"inverted_triangles", L.invertedTriangles},
                           {"total_area", L.totalArea},
-                          {"gaussian_curvature_measure", curvatureMeasureJson(L.measure, o.measure)},
+                          {"gaussian_curvature_measure", refine::curvatureMeasureJson(L.measure, o.measure)},
                           {"seconds", L.seconds}};
   if (extrinsic)
     level["extrinsic"] = {{"e_H", L.meanCurvature.meanAbsoluteError},
@@ -141,7 +141,7 @@ nlohmann::json studyJson(const refine::ConvergenceStudy& study, const Convergenc
                       {"t0_vertices", study.t0Vertices},
                       {"ratio_bound", a.ratio},
                       {"smoothing_passes", a.smoothing},
-                      {"uniformization", uniformizationJson(study.uniformization)},
+                      {"uniformization", refine::uniformizationJson(study.uniformization)},
                       {"orders",
                        {{"e_G_vs_mean_circumradius", study.orderErrorVsCircumradius},
                         {"mean_circumradius_vs_vertices", study.orderCircumradiusVsVertices},

@@ -10,6 +10,7 @@
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/mesh/intrinsic_flips.h"
 #include "conformesh/intrinsic/mesh/mesh_summary.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::apps {
 
@@ -26,37 +27,11 @@ double degrees(double radians) {
 }
 
 nlohmann::json toJson(const intrinsic::MeshSummary& s, const intrinsic::ConversionReport& conv) {
-  nlohmann::json comps = nlohmann::json::array();
-  for (const auto& c : s.components)
-    comps.push_back({{"vertices", c.vertices},
-                     {"edges", c.edges},
-                     {"faces", c.faces},
-                     {"boundary_loops", c.boundaryLoops},
-                     {"euler_characteristic", c.eulerCharacteristic},
-                     {"genus", c.genus}});
-  return {{"background", intrinsic::toString(s.background)},
-          {"vertices", s.vertices},
-          {"edges", s.edges},
-          {"faces", s.faces},
-          {"components", comps},
-          {"boundary_loops", s.boundaryLoops},
-          {"euler_characteristic", s.eulerCharacteristic},
-          {"genus", s.genus},
-          {"total_area", s.totalArea},
-          {"interior_angle_deficit", s.curvature.interiorDeficit},
-          {"boundary_turning", s.curvature.boundaryTurning},
-          {"background_curvature_term", s.curvature.backgroundTerm},
-          {"total_curvature", s.curvature.interiorDeficit + s.curvature.boundaryTurning},
-          {"gauss_bonnet_residual", s.curvature.gaussBonnetResidual},
-          {"min_corner_angle_deg", degrees(s.minCornerAngle)},
-          {"max_corner_angle_deg", degrees(s.maxCornerAngle)},
-          {"min_edge_length", s.minEdgeLength},
-          {"max_edge_length", s.maxEdgeLength},
-          {"non_delaunay_edges", s.nonDelaunayEdges},
-          {"non_delaunay_fraction", s.nonDelaunayFraction},
-          {"reoriented_faces", conv.build.reorientedFaces},
-          {"unreferenced_vertices_removed", conv.unreferencedVerticesRemoved},
-          {"lengths_from", conv.lengthsFromPositions ? "positions" : "edge element"}};
+  nlohmann::json j = refine::meshSummaryJson(s);
+  j["reoriented_faces"] = conv.build.reorientedFaces;
+  j["unreferenced_vertices_removed"] = conv.unreferencedVerticesRemoved;
+  j["lengths_from"] = conv.lengthsFromPositions ? "positions" : "edge element";
+  return j;
 }
 
 void printText(const std::string& path, const intrinsic::MeshSummary& s, const intrinsic::ConversionReport& conv) {

@@ -12,10 +12,10 @@
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
 #include "conformesh/refine/trace/input_location.h"
-#include "report_json.h"
 
 namespace conformesh::apps {
 
@@ -123,7 +123,7 @@ void run(const RefineArgs& args) {
                  {"smoothing_moves", s.smoothingMoves},
                  {"smoothing_refused", s.smoothingRefused},
                  {"insertions_after_smoothing", s.insertionsAfterSmoothing}}},
-               {"quality", qualityJson(q)}});
+               {"quality", refine::qualityJson(q)}});
     return;
   }
   std::cout << args.input << " -> " << args.output << " (" << intrinsic::toString(tri.background) << ", " << seconds

@@ -12,9 +12,9 @@
 #include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/metric/metric_families.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
 #include "remesh_mesh_input.h"
-#include "report_json.h"
 
 namespace conformesh::apps {
 
@@ -60,31 +60,14 @@ void run(const RemeshArgs& a) {
   const refine::RemeshResult r = refine::remeshMetric(*metric, o);
   intrinsic::MeshData data = refine::toMeshData(r, *metric, a.epsilon);
 
-  nlohmann::json j = {{"metric", metric->description()},
-                      {"eps", a.epsilon},
-                      {"ratio_bound", a.ratio},
-                      {"smoothing_passes", a.smoothing},
-                      {"segment_rule", a.segmentRule},
-                      {"t0", {{"vertices", r.t0Vertices}, {"faces", r.t0Faces}}},
-                      {"uniformization", uniformizationJson(r.uniformization)},
-                      {"disk_target", refine::toString(r.diskTarget)},
-                      {"refinement", refineStatisticsJson(r.refinement)},
-                      {"quality_uniformized", qualityJson(r.uniformQuality)},
-                      {"quality", qualityJson(r.quality)},
-                      {"inverted_triangles", r.invertedTriangles},
-                      {"total_area", intrinsic::totalArea(r.mesh)},
-                      {"seconds",
-                       {{"discretize", r.seconds.discretize},
-                        {"uniformize", r.seconds.uniformize},
-                        {"refine", r.seconds.refine},
-                        {"pull_back", r.seconds.pullBack}}}};
+  nlohmann::json j = refine::metricRemeshJson(r, *metric, o);
   if (!a.noCheck) {
     progress("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
     intrinsic::CurvatureMeasureOptions co;
     co.progress = countingProgress("curvature measure");
     co.region = a.region == "union" ? intrinsic::MeasureRegion::TriangleUnion : intrinsic::MeasureRegion::GeodesicBall;
     const intrinsic::CurvatureMeasureResult c = intrinsic::gaussianCurvatureMeasure(r.mesh, r.reference, *metric, co);
-    j["gaussian_curvature_measure"] = curvatureMeasureJson(c, co);
+    j["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);
   }
   writeMeshOutputs(

@@ -12,8 +12,8 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/io/vtk_writer.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
-#include "report_json.h"
 
 namespace conformesh::apps {
 
@@ -46,38 +46,13 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
   const refine::MeshRemeshResult r = refine::remeshMesh(in.triangulation, in.positions, o);
   intrinsic::MeshData data = refine::toMeshData(r, in.source, a.epsilon);
 
-  nlohmann::json j = {
-      {"input", in.source},
-      {"eps", a.epsilon},
-      {"ratio_bound", a.ratio},
-      {"refine_in", refine::toString(r.refinedIn)},
-      {"smoothing_passes", o.refinement.smoothingPasses},
-      {"segment_rule", a.segmentRule},
-      {"input_mesh",
-       {{"vertices", r.inputVertices}, {"faces", r.inputFaces}, {"area", intrinsic::totalArea(in.triangulation)}}},
-      {"refinement", refineStatisticsJson(r.refinement)},
-      {"quality", qualityJson(r.quality)},
-      {"inverted_triangles", r.invertedTriangles},
-      {"orientation_checked_triangles", r.orientationChecked},
-      {"same_face_edges", r.sameFaceEdges},
-      {"max_same_face_length_error", r.maxSameFaceLengthError},
-      {"loop_edges", r.loopEdges},
-      {"total_area", intrinsic::totalArea(r.mesh)},
-      {"seconds",
-       {{"uniformize", r.seconds.uniformize}, {"refine", r.seconds.refine}, {"pull_back", r.seconds.pullBack}}}};
-  if (!inInput) {  // the uniformized surface and the image paths exist on the paper's route only
-    j["uniformization"] = uniformizationJson(r.uniformization);
-    j["quality_uniformized"] = qualityJson(r.uniformQuality);
-    j["path_pieces"] = r.pathPieces;
-    j["input_edge_crossings"] = r.inputEdgeCrossings;
-    j["max_path_excess"] = r.maxBendExcess;  // (sum of straight pieces) / (developed length) − 1, over edges
-  }
+  nlohmann::json j = refine::meshRemeshJson(r, in.triangulation, in.source, o);
   if (!a.noCheck) {
     progress("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
     intrinsic::CurvatureMeasureOptions co;
     co.progress = countingProgress("curvature measure");
     const intrinsic::CurvatureMeasureResult c = refine::meshCurvatureMeasure(r, in.triangulation, co);
-    j["gaussian_curvature_measure"] = curvatureMeasureJson(c, co);
+    j["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);
   }
   writeMeshOutputs(

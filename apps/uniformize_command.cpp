@@ -12,6 +12,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::apps {
 
@@ -75,35 +76,16 @@ void runUniformize(const UniformizeOptions& o) {
   }
 
   // Figures a reader can check: the worst interior angle-sum error in the written geometry and Gauss–Bonnet.
-  const double worst = intrinsic::maxInteriorAngleSumError(u.uniform);
-  const intrinsic::CurvatureTotals totals = intrinsic::curvatureTotals(u.uniform);
-  const auto& r = u.report;
-  nlohmann::json j = {{"input", o.input},
-                      {"output", o.output},
-                      {"method", o.method},
-                      {"target", intrinsic::toString(r.target)},
-                      {"background", intrinsic::toString(u.uniform.background)},
-                      {"genus", r.genus},
-                      {"boundary_loops", r.boundaryLoops},
-                      {"newton_steps", r.newtonSteps},
-                      {"flips", r.flips},
-                      {"max_curvature_residual", r.maxResidual},
-                      {"tolerance", r.effectiveTolerance},
-                      {"max_interior_angle_sum_error", worst},
-                      {"gauss_bonnet_residual", totals.gaussBonnetResidual},
-                      {"total_area", intrinsic::totalArea(u.uniform)},
-                      {"seconds", r.seconds}};
-  if (r.target == intrinsic::UniformizationTarget::Sphere) {
-    j["puncture_vertex"] = r.punctureVertex;
-    j["puncture_attempts"] = r.punctureAttempts;
-    j["centring_iterations"] = r.centringIterations;
-  }
-  if (r.target == intrinsic::UniformizationTarget::FlatCylinder) j["cylinder_height"] = r.cylinderHeight;
+  nlohmann::json j = refine::uniformizedJson(u);
+  j["input"] = o.input;
+  j["output"] = o.output;
+  j["method"] = o.method;
   if (!o.correspondence.empty()) j["correspondence"] = o.correspondence;
   if (o.json) {
     printJson(j);
     return;
   }
+  const auto& r = u.report;
   std::printf("%s -> %s\n", o.input.c_str(), o.output.c_str());
   std::printf("  %-30s %s (%s background), genus %d, %d boundary loops\n", "target",
               intrinsic::toString(r.target).c_str(), intrinsic::toString(u.uniform.background).c_str(), r.genus,
@@ -111,9 +93,9 @@ void runUniformize(const UniformizeOptions& o) {
   std::printf("  %-30s %d Newton steps, %lld Ptolemy flips, %.2f s\n", "flow", r.newtonSteps, (long long)r.flips,
               r.seconds);
   std::printf("  %-30s %.3g rad (tolerance %.3g)\n", "max |K - K^| at exit", r.maxResidual, r.effectiveTolerance);
-  std::printf("  %-30s %.3g rad\n", "max |angle sum - 2pi|", worst);
-  std::printf("  %-30s %.3g\n", "Gauss-Bonnet residual", totals.gaussBonnetResidual);
-  std::printf("  %-30s %.12g\n", "total area", intrinsic::totalArea(u.uniform));
+  std::printf("  %-30s %.3g rad\n", "max |angle sum - 2pi|", j["max_interior_angle_sum_error"].get<double>());
+  std::printf("  %-30s %.3g\n", "Gauss-Bonnet residual", j["gauss_bonnet_residual"].get<double>());
+  std::printf("  %-30s %.12g\n", "total area", j["total_area"].get<double>());
   if (r.target == intrinsic::UniformizationTarget::FlatCylinder)
     std::printf("  %-30s %.12g (circumference 2 pi; = log(R/r) of the annulus)\n", "cylinder height", r.cylinderHeight);
 }

@@ -17,17 +17,12 @@
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
 #include "metrics.h"
-#include "report_json.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 #include "triangulation.h"
 
 namespace conformesh::python {
 
 namespace {
-
-using apps::curvatureMeasureJson;
-using apps::qualityJson;
-using apps::refineStatisticsJson;
-using apps::uniformizationJson;
 
 // Interrupt checks inside the refinement loop: every this many insertions (each check costs one GIL round trip).
 constexpr std::int64_t kRefineCheckEvery = 2000;
@@ -69,33 +64,10 @@ UniformizeResult uniformize(const TriangulationPtr& in, double tolerance, int ma
       u = intrinsic::uniformizeByCirclePacking(in->tri, packing).result;
     }
   }
-  // The report of `conformesh uniformize --json` (apps/uniformize_command.cpp), without the file names.
-  const std::vector<double> sums = intrinsic::angleSums(u.uniform);
-  double worst = 0;
-  for (int v = 0; v < u.uniform.mesh.nVertices(); ++v)
-    if (!u.uniform.mesh.isBoundaryVertex(v)) worst = std::max(worst, std::abs(sums[v] - 2 * M_PI));
-  const intrinsic::CurvatureTotals totals = intrinsic::curvatureTotals(u.uniform);
-  const auto& r = u.report;
-  nlohmann::json j = {{"input", in->source},
-                      {"method", method},
-                      {"target", intrinsic::toString(r.target)},
-                      {"background", intrinsic::toString(u.uniform.background)},
-                      {"genus", r.genus},
-                      {"boundary_loops", r.boundaryLoops},
-                      {"newton_steps", r.newtonSteps},
-                      {"flips", r.flips},
-                      {"max_curvature_residual", r.maxResidual},
-                      {"tolerance", r.effectiveTolerance},
-                      {"max_interior_angle_sum_error", worst},
-                      {"gauss_bonnet_residual", totals.gaussBonnetResidual},
-                      {"total_area", intrinsic::totalArea(u.uniform)},
-                      {"seconds", r.seconds}};
-  if (r.target == intrinsic::UniformizationTarget::Sphere) {
-    j["puncture_vertex"] = r.punctureVertex;
-    j["puncture_attempts"] = r.punctureAttempts;
-    j["centring_iterations"] = r.centringIterations;
-  }
-  if (r.target == intrinsic::UniformizationTarget::FlatCylinder) j["cylinder_height"] = r.cylinderHeight;
+  // The report of `conformesh uniformize --json`, without the output file name.
+  nlohmann::json j = refine::uniformizedJson(u);
+  j["input"] = in->source;
+  j["method"] = method;
   UniformizeResult out;
   out.geometry = py::str(geometryName(u.uniform.background));
   auto t = fromIntrinsic(std::move(u.uniform), in->source + " uniformized");
@@ -170,25 +142,7 @@ RemeshResult remeshMetric(const Metric& metric, const RemeshArgs& a, CallGuard& 
     *shared = refine::remeshMetric(*metric.metric, o);
     const refine::RemeshResult& r = *shared;
     *data = refine::toMeshData(r, *metric.metric, a.eps);
-    // The keys of `conformesh remesh FAMILY --json` (apps/remesh_command.cpp), without the output file names.
-    j = {{"metric", metric.metric->description()},
-         {"eps", a.eps},
-         {"ratio_bound", a.ratio},
-         {"smoothing_passes", smoothing},
-         {"segment_rule", a.segmentRule},
-         {"t0", {{"vertices", r.t0Vertices}, {"faces", r.t0Faces}}},
-         {"uniformization", uniformizationJson(r.uniformization)},
-         {"disk_target", refine::toString(r.diskTarget)},
-         {"refinement", refineStatisticsJson(r.refinement)},
-         {"quality_uniformized", qualityJson(r.uniformQuality)},
-         {"quality", qualityJson(r.quality)},
-         {"inverted_triangles", r.invertedTriangles},
-         {"total_area", intrinsic::totalArea(r.mesh)},
-         {"seconds",
-          {{"discretize", r.seconds.discretize},
-           {"uniformize", r.seconds.uniformize},
-           {"refine", r.seconds.refine},
-           {"pull_back", r.seconds.pullBack}}}};
+    j = refine::metricRemeshJson(r, *metric.metric, o);  // the keys of `conformesh remesh FAMILY --json`
     if (a.check) {
       guard.step("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
       intrinsic::CurvatureMeasureOptions co;
@@ -196,7 +150,7 @@ RemeshResult remeshMetric(const Metric& metric, const RemeshArgs& a, CallGuard& 
       co.region = a.region == "union" ? intrinsic::MeasureRegion::TriangleUnion : intrinsic::MeasureRegion::GeodesicBall;
       const intrinsic::CurvatureMeasureResult c =
           intrinsic::gaussianCurvatureMeasure(r.mesh, r.reference, *metric.metric, co);
-      j["gaussian_curvature_measure"] = curvatureMeasureJson(c, co);
+      j["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
       std::vector<double> error(c.discrete.size());
       for (std::size_t v = 0; v < error.size(); ++v) error[v] = c.discrete[v] - c.smooth[v];
       data->vertexProperties["error"] = std::move(error);
@@ -247,38 +201,13 @@ RemeshResult remeshTriangulation(const Triangulation& in, const RemeshArgs& a, C
     *shared = refine::remeshMesh(in.tri, in.positions, o);
     const refine::MeshRemeshResult& r = *shared;
     *data = refine::toMeshData(r, in.source, a.eps);
-    // The keys of `conformesh remesh MESHFILE --json` (apps/remesh_mesh_input.cpp), without the output file names.
-    j = {{"input", in.source},
-         {"eps", a.eps},
-         {"ratio_bound", a.ratio},
-         {"refine_in", refine::toString(r.refinedIn)},
-         {"smoothing_passes", o.refinement.smoothingPasses},
-         {"segment_rule", a.segmentRule},
-         {"input_mesh",
-          {{"vertices", r.inputVertices}, {"faces", r.inputFaces}, {"area", intrinsic::totalArea(in.tri)}}},
-         {"refinement", refineStatisticsJson(r.refinement)},
-         {"quality", qualityJson(r.quality)},
-         {"inverted_triangles", r.invertedTriangles},
-         {"orientation_checked_triangles", r.orientationChecked},
-         {"same_face_edges", r.sameFaceEdges},
-         {"max_same_face_length_error", r.maxSameFaceLengthError},
-         {"loop_edges", r.loopEdges},
-         {"total_area", intrinsic::totalArea(r.mesh)},
-         {"seconds",
-          {{"uniformize", r.seconds.uniformize}, {"refine", r.seconds.refine}, {"pull_back", r.seconds.pullBack}}}};
-    if (!inInput) {
-      j["uniformization"] = uniformizationJson(r.uniformization);
-      j["quality_uniformized"] = qualityJson(r.uniformQuality);
-      j["path_pieces"] = r.pathPieces;
-      j["input_edge_crossings"] = r.inputEdgeCrossings;
-      j["max_path_excess"] = r.maxBendExcess;
-    }
+    j = refine::meshRemeshJson(r, in.tri, in.source, o);  // the keys of `conformesh remesh MESHFILE --json`
     if (a.check) {
       guard.step("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
       intrinsic::CurvatureMeasureOptions co;
       co.progress = guard.countCallback("curvature measure");
       const intrinsic::CurvatureMeasureResult c = refine::meshCurvatureMeasure(r, in.tri, co);
-      j["gaussian_curvature_measure"] = curvatureMeasureJson(c, co);
+      j["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
       std::vector<double> error(c.discrete.size());
       for (std::size_t v = 0; v < error.size(); ++v) error[v] = c.discrete[v] - c.smooth[v];
       data->vertexProperties["error"] = std::move(error);

@@ -12,6 +12,7 @@
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/intrinsic_flips.h"
 #include "conformesh/intrinsic/mesh/mesh_summary.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::python {
 
@@ -155,43 +156,14 @@ py::array_t<double> cornerLengths(const Triangulation& t) {
   return toArray(std::move(l), 3);
 }
 
-double degrees(double r) { return r * 180.0 / M_PI; }
-
 nlohmann::json summaryJson(const Triangulation& t) {
-  const intrinsic::MeshSummary s = intrinsic::summarize(t.tri);
-  nlohmann::json comps = nlohmann::json::array();
-  for (const auto& c : s.components)
-    comps.push_back({{"vertices", c.vertices},
-                     {"edges", c.edges},
-                     {"faces", c.faces},
-                     {"boundary_loops", c.boundaryLoops},
-                     {"euler_characteristic", c.eulerCharacteristic},
-                     {"genus", c.genus}});
-  // The keys of `conformesh info --json` (apps/info_command.cpp), "file" being the source.
-  return {{"file", t.source},
-          {"background", intrinsic::toString(s.background)},
-          {"vertices", s.vertices},
-          {"edges", s.edges},
-          {"faces", s.faces},
-          {"components", comps},
-          {"boundary_loops", s.boundaryLoops},
-          {"euler_characteristic", s.eulerCharacteristic},
-          {"genus", s.genus},
-          {"total_area", s.totalArea},
-          {"interior_angle_deficit", s.curvature.interiorDeficit},
-          {"boundary_turning", s.curvature.boundaryTurning},
-          {"background_curvature_term", s.curvature.backgroundTerm},
-          {"total_curvature", s.curvature.interiorDeficit + s.curvature.boundaryTurning},
-          {"gauss_bonnet_residual", s.curvature.gaussBonnetResidual},
-          {"min_corner_angle_deg", degrees(s.minCornerAngle)},
-          {"max_corner_angle_deg", degrees(s.maxCornerAngle)},
-          {"min_edge_length", s.minEdgeLength},
-          {"max_edge_length", s.maxEdgeLength},
-          {"non_delaunay_edges", s.nonDelaunayEdges},
-          {"non_delaunay_fraction", s.nonDelaunayFraction},
-          {"reoriented_faces", t.reorientedFaces},
-          {"unreferenced_vertices_removed", t.unreferencedVerticesRemoved},
-          {"lengths_from", t.lengthsFromPositions ? "positions" : "edge element"}};
+  // The keys of `conformesh info --json`, "file" being the source.
+  nlohmann::json j = refine::meshSummaryJson(intrinsic::summarize(t.tri));
+  j["file"] = t.source;
+  j["reoriented_faces"] = t.reorientedFaces;
+  j["unreferenced_vertices_removed"] = t.unreferencedVerticesRemoved;
+  j["lengths_from"] = t.lengthsFromPositions ? "positions" : "edge element";
+  return j;
 }
 
 int componentSum(const Triangulation& t, int intrinsic::ComponentTopology::*field) {

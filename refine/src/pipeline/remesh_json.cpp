@@ -1,6 +1,9 @@
-// remesh_json.cpp — the `remesh --json` dict of one remesh (see remesh_json.h); the converters are apps/report_json's.
+// remesh_json.cpp — the libraries' report structs and one remesh as JSON (see remesh_json.h).
 #include "conformesh/refine/pipeline/remesh_json.h"
 
+#include <cmath>
+
+#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
 
 namespace conformesh::refine {
@@ -64,6 +67,61 @@ nlohmann::json curvatureMeasureJson(const intrinsic::CurvatureMeasureResult& c,
           {"smooth_total_curvature", c.smoothTotalCurvature}};
 }
 
+nlohmann::json meshSummaryJson(const intrinsic::MeshSummary& s) {
+  const auto degrees = [](double radians) { return radians * 180.0 / M_PI; };
+  nlohmann::json comps = nlohmann::json::array();
+  for (const auto& c : s.components)
+    comps.push_back({{"vertices", c.vertices},
+                     {"edges", c.edges},
+                     {"faces", c.faces},
+                     {"boundary_loops", c.boundaryLoops},
+                     {"euler_characteristic", c.eulerCharacteristic},
+                     {"genus", c.genus}});
+  return {{"background", intrinsic::toString(s.background)},
+          {"vertices", s.vertices},
+          {"edges", s.edges},
+          {"faces", s.faces},
+          {"components", comps},
+          {"boundary_loops", s.boundaryLoops},
+          {"euler_characteristic", s.eulerCharacteristic},
+          {"genus", s.genus},
+          {"total_area", s.totalArea},
+          {"interior_angle_deficit", s.curvature.interiorDeficit},
+          {"boundary_turning", s.curvature.boundaryTurning},
+          {"background_curvature_term", s.curvature.backgroundTerm},
+          {"total_curvature", s.curvature.interiorDeficit + s.curvature.boundaryTurning},
+          {"gauss_bonnet_residual", s.curvature.gaussBonnetResidual},
+          {"min_corner_angle_deg", degrees(s.minCornerAngle)},
+          {"max_corner_angle_deg", degrees(s.maxCornerAngle)},
+          {"min_edge_length", s.minEdgeLength},
+          {"max_edge_length", s.maxEdgeLength},
+          {"non_delaunay_edges", s.nonDelaunayEdges},
+          {"non_delaunay_fraction", s.nonDelaunayFraction}};
+}
+
+nlohmann::json uniformizedJson(const intrinsic::Uniformization& u) {
+  const auto& r = u.report;
+  nlohmann::json j = {{"target", intrinsic::toString(r.target)},
+                      {"background", intrinsic::toString(u.uniform.background)},
+                      {"genus", r.genus},
+                      {"boundary_loops", r.boundaryLoops},
+                      {"newton_steps", r.newtonSteps},
+                      {"flips", r.flips},
+                      {"max_curvature_residual", r.maxResidual},
+                      {"tolerance", r.effectiveTolerance},
+                      {"max_interior_angle_sum_error", intrinsic::maxInteriorAngleSumError(u.uniform)},
+                      {"gauss_bonnet_residual", intrinsic::curvatureTotals(u.uniform).gaussBonnetResidual},
+                      {"total_area", intrinsic::totalArea(u.uniform)},
+                      {"seconds", r.seconds}};
+  if (r.target == intrinsic::UniformizationTarget::Sphere) {
+    j["puncture_vertex"] = r.punctureVertex;
+    j["puncture_attempts"] = r.punctureAttempts;
+    j["centring_iterations"] = r.centringIterations;
+  }
+  if (r.target == intrinsic::UniformizationTarget::FlatCylinder) j["cylinder_height"] = r.cylinderHeight;
+  return j;
+}
+
 nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMetric& metric,
                                 const RemeshOptions& o) {
   return {{"metric", metric.description()},
@@ -86,16 +144,17 @@ nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMe
             {"pull_back", r.seconds.pullBack}}}};
 }
 
-nlohmann::json meshRemeshJson(const MeshRemeshResult& r, const MeshInput& in, const MeshRemeshOptions& o) {
+nlohmann::json meshRemeshJson(const MeshRemeshResult& r, const intrinsic::IntrinsicTriangulation& input,
+                              const std::string& source, const MeshRemeshOptions& o) {
   nlohmann::json j = {
-      {"input", in.source},
+      {"input", source},
       {"eps", o.epsilon},
       {"ratio_bound", o.ratioBound},
       {"refine_in", toString(r.refinedIn)},
       {"smoothing_passes", o.refinement.smoothingPasses},
       {"segment_rule", segmentRuleName(o.refinement.segmentRule)},
       {"input_mesh",
-       {{"vertices", r.inputVertices}, {"faces", r.inputFaces}, {"area", intrinsic::totalArea(in.triangulation)}}},
+       {{"vertices", r.inputVertices}, {"faces", r.inputFaces}, {"area", intrinsic::totalArea(input)}}},
       {"refinement", refineStatisticsJson(r.refinement)},
       {"quality", qualityJson(r.quality)},
       {"inverted_triangles", r.invertedTriangles},

@@ -160,7 +160,7 @@ json computeMeshCase(const SweepCase& c, const SweepRunOptions& options,
     o.epsilon = c.epsilon;
     r = remeshMesh(in.triangulation, in.positions, o);
   }
-  json j = meshRemeshJson(r, in, o);
+  json j = meshRemeshJson(r, in.triangulation, in.source, o);
   intrinsic::MeshData data = toMeshData(r, in.source, o.epsilon);
   if (!opt["no-check"].get<bool>()) {
     stage("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");

@@ -1,12 +1,13 @@
-// remesh_json.h — the report of one remesh as the JSON dict that `conformesh remesh --json` prints, built in the
-// library so that `conformesh sweep` records the same keys. A copy of apps/report_json.h's converters in the library
-// (the command still uses its own; switching it over is a separate change). No files, no global state.
+// remesh_json.h — the library's reports as the JSON dicts that `conformesh remesh --json` (and refine, convergence)
+// print: one definition shared by the commands, `conformesh sweep`'s records and the Python module's `.report`.
+// No files, no global state.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+#include "conformesh/intrinsic/mesh/mesh_summary.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
@@ -22,6 +23,14 @@ nlohmann::json refineStatisticsJson(const RefineStatistics& s);
 nlohmann::json curvatureMeasureJson(const intrinsic::CurvatureMeasureResult& c,
                                     const intrinsic::CurvatureMeasureOptions& o);
 
+// The dict of `info --json` without what depends on how the file was read (file, reoriented_faces,
+// unreferenced_vertices_removed, lengths_from): topology, curvature totals, angle and length ranges, Delaunay-ness.
+nlohmann::json meshSummaryJson(const intrinsic::MeshSummary& s);
+// The dict of `uniformize --json` without the file names and the method: target, background, genus, boundary loops,
+// Newton steps, flips, residuals, the worst interior angle sum error, Gauss–Bonnet, area, seconds, and the sphere's
+// puncture figures or the cylinder's height where they apply.
+nlohmann::json uniformizedJson(const intrinsic::Uniformization& u);
+
 // The dict of `remesh FAMILY --json` (without "output" / "vtk", and without "gaussian_curvature_measure", which the
 // caller adds when it ran the check): metric, eps, ratio_bound, smoothing_passes, segment_rule, t0, uniformization,
 // disk_target, refinement, quality_uniformized, quality, inverted_triangles, total_area, seconds.
@@ -31,6 +40,8 @@ nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMe
 // segment_rule, input_mesh, refinement, quality, inverted_triangles, orientation_checked_triangles, same_face_edges,
 // max_same_face_length_error, loop_edges, total_area, seconds; on the uniformized route also uniformization,
 // quality_uniformized, path_pieces, input_edge_crossings, max_path_excess.
-nlohmann::json meshRemeshJson(const MeshRemeshResult& r, const MeshInput& input, const MeshRemeshOptions& options);
+// `input` is the triangulation remeshMesh was given, `source` the name of its file (the "input" key).
+nlohmann::json meshRemeshJson(const MeshRemeshResult& r, const intrinsic::IntrinsicTriangulation& input,
+                              const std::string& source, const MeshRemeshOptions& options);
 
 }  // namespace conformesh::refine
