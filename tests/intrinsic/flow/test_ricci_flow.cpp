@@ -102,7 +102,9 @@ TEST_CASE("stopAfterStep sees the angle sums of each accepted step and can end t
   CHECK(report.newtonSteps == 2);
   CHECK(calls == 2);
   CHECK(sumsError == 0);
-  // Stopped where the unstopped flow stood after two steps: the residual entering step 3.
+  // Stopped where the unstopped flow stood after two steps: the residual entering step 3. Compared bit for bit across
+  // two runs: this relies on the flow's parallel loops splitting their work into fixed ranges that write disjoint data
+  // (two_threads.h, onTwoCores), so that the bits do not depend on which of the two threads ran which range.
   CHECK(report.maxResidual == lastSeen);
   CHECK(report.maxResidual == before[2]);
   CHECK(report.maxResidual > report.effectiveTolerance);
