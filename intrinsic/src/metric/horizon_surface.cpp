@@ -26,24 +26,24 @@ int ylmIndex(int l, int m) {
 // their first two θ-derivatives, for 0 ≤ m ≤ l ≤ L, indexed l(l+1)/2 + m. The recursions (docs/horizons.md §2):
 // P̄_00 = 1/√(4π); P̄_mm = √((2m+1)/(2m)) sin θ P̄_(m−1)(m−1); P̄_(m+1)m = √(2m+3) cos θ P̄_mm;
 // P̄_lm = a_lm (cos θ P̄_(l−1)m − b_lm P̄_(l−2)m), a = √((4l²−1)/(l²−m²)), b = √(((l−1)²−m²)/(4(l−1)²−1));
-// each differentiated in θ term by term (d cos θ = −sin θ, d sin θ = cos θ).
+// each differentiated in θ term by term (d cos θ = −sin θ, d sin θ = cos θ). Only orders m ≤ mMax are filled.
 struct Legendre {
   std::vector<double> p, dp, ddp;
 };
-Legendre normalizedLegendre(int L, double theta) {
+Legendre normalizedLegendre(int L, double theta, int mMax) {
   const double x = std::cos(theta), s = std::sin(theta);
   const int n = (L + 1) * (L + 2) / 2;
   Legendre P{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
   auto at = [](int l, int m) { return l * (l + 1) / 2 + m; };
   P.p[0] = 1 / std::sqrt(4 * M_PI), P.dp[0] = 0, P.ddp[0] = 0;
-  for (int m = 1; m <= L; ++m) {
+  for (int m = 1; m <= mMax; ++m) {
     const int i = at(m, m), j = at(m - 1, m - 1);
     const double k = std::sqrt((2.0 * m + 1) / (2.0 * m));
     P.p[i] = k * s * P.p[j];
     P.dp[i] = k * (x * P.p[j] + s * P.dp[j]);
     P.ddp[i] = k * (-s * P.p[j] + 2 * x * P.dp[j] + s * P.ddp[j]);
   }
-  for (int m = 0; m < L; ++m) {
+  for (int m = 0; m <= std::min(mMax, L - 1); ++m) {
     const int i = at(m + 1, m), j = at(m, m);
     const double k = std::sqrt(2.0 * m + 3);
     P.p[i] = k * x * P.p[j];
@@ -94,7 +94,7 @@ YlmConvention parseYlmConvention(const std::string& name) {
 }
 
 std::vector<YlmJet> realYlmJets(int lMax, double theta, double phi) {
-  const Legendre P = normalizedLegendre(lMax, theta);
+  const Legendre P = normalizedLegendre(lMax, theta, lMax);
   std::vector<YlmJet> out((lMax + 1) * (lMax + 1));
   for (int l = 0; l <= lMax; ++l)
     for (int m = 0; m <= l; ++m) {
@@ -121,6 +121,7 @@ Strahlkorper::Strahlkorper(const Eigen::Vector3d& center, const std::vector<Term
       throw InputError("Strahlkorper: coefficient (l=" + std::to_string(t.l) + ", m=" + std::to_string(t.m) +
                        ") needs l >= 0 and |m| <= l");
     lMax_ = std::max(lMax_, t.l);
+    if (t.a != 0) mMax_ = std::max(mMax_, std::abs(t.m));
   }
   a_.assign((lMax_ + 1) * (lMax_ + 1), 0.0);
   std::vector<bool> seen(a_.size(), false);
@@ -143,13 +144,20 @@ std::vector<Strahlkorper::Term> Strahlkorper::terms() const {
   return out;
 }
 RadiusJet Strahlkorper::radius(double theta, double phi) const {
-  const std::vector<YlmJet> y = realYlmJets(lMax_, theta, phi);
+  // Σ a_lm Y_lm with the Legendre table filled only up to the largest |m| present (axisymmetric shapes: O(l_max)).
+  const Legendre P = normalizedLegendre(lMax_, theta, mMax_);
   RadiusJet r{0, 0, 0, 0, 0, 0};
-  for (std::size_t i = 0; i < a_.size(); ++i) {
-    const double a = a_[i];
-    if (a == 0) continue;
-    r.r += a * y[i].y, r.rt += a * y[i].yt, r.rp += a * y[i].yp;
-    r.rtt += a * y[i].ytt, r.rtp += a * y[i].ytp, r.rpp += a * y[i].ypp;
+  for (int m = 0; m <= mMax_; ++m) {
+    const double c = m == 0 ? 1 : M_SQRT2 * std::cos(m * phi), sn = m == 0 ? 0 : M_SQRT2 * std::sin(m * phi);
+    for (int l = m; l <= lMax_; ++l) {
+      const int i = l * (l + 1) / 2 + m;
+      // The cos(mφ) and sin(mφ) terms combined: A = a_lm c + a_l,−m s, and its φ-derivative m (a_l,−m c − a_lm s).
+      const double ac = a_[ylmIndex(l, m)], as = m == 0 ? 0 : a_[ylmIndex(l, -m)];
+      if (ac == 0 && as == 0) continue;
+      const double A = ac * c + as * sn, Ap = m * (as * c - ac * sn), App = -double(m) * m * A;
+      r.r += P.p[i] * A, r.rt += P.dp[i] * A, r.rtt += P.ddp[i] * A;
+      r.rp += P.p[i] * Ap, r.rtp += P.dp[i] * Ap, r.rpp += P.p[i] * App;
+    }
   }
   return r;
 }

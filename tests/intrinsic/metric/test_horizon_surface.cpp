@@ -153,7 +153,7 @@ TEST_CASE("horizon: the Kerr horizon of Kerr-Schild coordinates has Smarr's area
         q.relativeTolerance = 1e-13, q.absoluteTolerance = 1e-13;
         errors.push_back(std::abs(metricArea(kerrHorizon(a, lMax, c), q).value - exact) / exact);
       }
-      INFO("a=" << a << " centre " << c.transpose() << ": relative area errors " << errors[0] << " " << errors[1]
+      UNSCOPED_INFO("a=" << a << " centre " << c.transpose() << ": relative area errors " << errors[0] << " " << errors[1]
                 << " " << errors[2]);
       // Spectral: each step of 8 in l_max gains at least a factor 30 until round-off (~1e-13 of the quadrature);
       // an algebraic rate of order p would gain only 2^p, 1.5^p.

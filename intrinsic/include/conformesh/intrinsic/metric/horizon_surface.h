@@ -58,7 +58,7 @@ class Strahlkorper {
 
  private:
   Eigen::Vector3d c_;
-  int lMax_ = 0;
+  int lMax_ = 0, mMax_ = 0;  // the largest l given, the largest |m| with a non-zero coefficient
   std::vector<double> a_;  // index l² + l + m
 };
 
