@@ -15,6 +15,7 @@
 #include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/pipeline/convergence_study.h"
+#include "horizon_input.h"
 
 namespace conformesh::apps {
 
@@ -33,6 +34,7 @@ struct ConvergenceArgs {
   std::string smoothingRule = "odt";
   std::string prefix = "convergence";
   bool json = false, noPlot = false;
+  HorizonInput horizon;
 };
 
 // "1k,2k,4500" → {1000, 2000, 4500}.
@@ -204,7 +206,7 @@ void printStudy(const refine::ConvergenceStudy& study, const std::vector<std::st
 
 // parse → compute (refine::runConvergenceStudy) → write CSV, JSON, plots → print.
 void run(const ConvergenceArgs& a) {
-  const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetric("convergence", a.family, a.params, a.field);
+  const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetricOrHorizon("convergence", a.family, a.params, a.field, a.horizon);
   const refine::ConvergenceOptions o = studyOptions(a);
   const refine::ConvergenceStudy study = refine::runConvergenceStudy(*metric, o);
 
@@ -236,6 +238,7 @@ void registerConvergenceCommand(CLI::App& app) {
       "Details: docs/cli.md#convergence");
   sub->add_option("family", a->family, "Metric family (see `conformesh discretize --list`)");
   addFieldOption(sub, a->field);
+  addHorizonOptions(sub, a->horizon);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
   sub->add_option("--vertices", a->vertices, "Target vertex counts, e.g. 1k,2k,4k,8k (default: the paper's Table 2)");
   sub->add_option("--levels", a->levels, "Use the first N counts of the paper's Table 2 (2..11)");

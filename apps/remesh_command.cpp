@@ -14,6 +14,7 @@
 #include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
+#include "horizon_input.h"
 #include "remesh_mesh_input.h"
 
 namespace conformesh::apps {
@@ -36,6 +37,7 @@ struct RemeshArgs {
   std::string smoothingRule = "odt";
   std::string refineIn = "uniformized";
   std::string segmentRule = "ruppert";
+  HorizonInput horizon;
 };
 
 void run(const RemeshArgs& a) {
@@ -46,7 +48,7 @@ void run(const RemeshArgs& a) {
   if (a.refineIn != "uniformized")
     throw InputError("remesh: --refine-in " + a.refineIn +
                      " applies to mesh files; a smooth metric is refined uniformized");
-  const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetric("remesh", a.family, a.params, a.field);
+  const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetricOrHorizon("remesh", a.family, a.params, a.field, a.horizon);
   refine::RemeshOptions o;
   o.epsilon = a.epsilon;
   o.ratioBound = a.ratio;
@@ -61,6 +63,7 @@ void run(const RemeshArgs& a) {
   intrinsic::MeshData data = refine::toMeshData(r, *metric, a.epsilon);
 
   nlohmann::json j = refine::metricRemeshJson(r, *metric, o);
+  if (a.horizon.given()) j["horizon"] = horizonReportJson(*metric, intrinsic::totalArea(r.mesh));
   if (!a.noCheck) {
     progress("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
     intrinsic::CurvatureMeasureOptions co;
@@ -91,6 +94,7 @@ void run(const RemeshArgs& a) {
                 "Gaussian curvature measure", c["mean_abs_error"].get<double>(), c["max_abs_error"].get<double>(),
                 100 * c["fraction_within"].get<double>(), c["within_band"].get<double>());
   }
+  if (j.contains("horizon")) printHorizonReport(j["horizon"]);
   std::printf("  %-34s discretize %.2f, uniformize %.2f, refine %.2f, pull back %.2f\n", "seconds",
               r.seconds.discretize, r.seconds.uniformize, r.seconds.refine, r.seconds.pullBack);
   std::printf("  written to %s%s%s\n", a.output.c_str(), a.vtk.empty() ? "" : " and ", a.vtk.c_str());
@@ -108,6 +112,7 @@ void registerRemeshCommand(CLI::App& app) {
   sub->add_option("family", a->family,
                   "Metric family (`conformesh discretize --list`) or a mesh file (.off/.obj/.ply)");
   addFieldOption(sub, a->field);
+  addHorizonOptions(sub, a->horizon);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
   sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric")->required();
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (sqrt 2: 20.7 deg)")

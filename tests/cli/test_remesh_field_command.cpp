@@ -55,7 +55,9 @@ TEST_CASE("remesh --field: the Kerr horizon a = 0.95 as an HDF5 field, finite cu
   INFO(r.err);
   REQUIRE(r.status == 0);
   const auto jt = nlohmann::json::parse(r.out);
-  // The two readers hand over the same samples bit for bit, so the pipeline is the same run.
+  // The two readers hand over the same samples bit for bit, so the pipeline is the same run, compared bit for bit
+  // across two processes: this relies on the flow's two-thread loops splitting their work into fixed ranges that write
+  // disjoint data (two_threads.h), so that the bits do not depend on the threads' timing.
   CHECK(jt["quality"]["vertices"] == j["quality"]["vertices"]);
   CHECK(jt["quality"]["min_angle_deg"] == j["quality"]["min_angle_deg"]);
   CHECK(jt["total_area"] == j["total_area"]);

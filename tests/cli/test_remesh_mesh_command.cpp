@@ -5,11 +5,14 @@
 #include <catch2/catch.hpp>
 
 #include "support/cli_runner.h"
+#include "support/vtk_reader.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -57,7 +60,38 @@ TEST_CASE("remesh MESHFILE: eight.off to PLY and VTK with the JSON report") {
   for (int v = 0; v < 315; ++v) CHECK(std::max({b0[v], b1[v], b2[v]}) == 1.0);
   // Read back as a triangulation, the file's lengths satisfy Gauss–Bonnet for χ = −2.
   CHECK(std::abs(curvatureTotals(toTriangulation(d)).gaussBonnetResidual) < 1e-9);
-  CHECK(fs::file_size(vtk) > 0);
+  // The VTK of the same run, parsed back: the PLY's positions and faces, and every per-vertex field of the PLY except
+  // the input_* correspondence, one value per point, all bit for bit (both files print doubles to 17 digits or as
+  // binary; a non-finite value is written to VTK as nan).
+  const conformesh::testing::VtkPolyData v = conformesh::testing::readVtkPolyData(vtk.string());
+  REQUIRE(v.points.size() == d.positions.size());
+  int pointsDiffer = 0;
+  for (std::size_t i = 0; i < v.points.size(); ++i)
+    for (int k = 0; k < 3; ++k) pointsDiffer += v.points[i][k] == d.positions[i][k] ? 0 : 1;
+  CHECK(pointsDiffer == 0);
+  REQUIRE(v.polygons.size() == d.faces.size());
+  int facesDiffer = 0;
+  for (std::size_t f = 0; f < d.faces.size(); ++f)
+    facesDiffer += v.polygons[f] == std::vector<int>(d.faces[f].begin(), d.faces[f].end()) ? 0 : 1;
+  CHECK(facesDiffer == 0);
+  CHECK(v.cellData.empty());
+  std::vector<std::string> expected;
+  for (const auto& [name, values] : d.vertexProperties)
+    if (name.rfind("input_", 0) != 0) expected.push_back(name);
+  std::vector<std::string> found;
+  for (const auto& [name, values] : v.pointData) found.push_back(name);
+  CHECK(found == expected);
+  CHECK(v.pointData.count("error") == 1);  // the per-vertex relative error of the curvature measure, for colouring
+  for (const auto& [name, values] : v.pointData) {
+    if (!d.vertexProperties.count(name)) continue;
+    const auto& ply = d.vertexProperties.at(name);
+    REQUIRE(values.size() == ply.size());
+    int differ = 0;
+    for (std::size_t i = 0; i < ply.size(); ++i)
+      differ += (std::isfinite(ply[i]) ? values[i] == ply[i] : std::isnan(values[i])) ? 0 : 1;
+    INFO("field " << name);
+    CHECK(differ == 0);
+  }
 }
 
 TEST_CASE("remesh MESHFILE --refine-in input: every angle of the file's own lengths at least 20.7 deg") {
@@ -97,12 +131,57 @@ TEST_CASE("remesh MESHFILE --refine-in input: every angle of the file's own leng
 }
 
 TEST_CASE("remesh MESHFILE: human-readable report") {
-  const Run r = runCli("-q remesh " + kEight + " --eps 0.05 --no-check -o " + (dir() / "e.ply").string());
+  const std::string args = "-q remesh " + kEight + " --eps 0.05 --no-check -o " + (dir() / "e.ply").string();
+  const Run r = runCli(args);
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK(r.out.find("hyperbolic") != std::string::npos);
-  CHECK(r.out.find("smallest angle, input metric") != std::string::npos);
-  CHECK(r.out.find("Gauss-Bonnet residual") != std::string::npos);
+  // Its figures against the JSON report of the same command (the run is deterministic: the flow's two-thread loops
+  // split their work into fixed ranges), each to the precision it is printed with.
+  const Run rj = runCli(args + " --json");
+  REQUIRE(rj.status == 0);
+  const auto j = nlohmann::json::parse(rj.out);
+  const auto& q = j["quality"];
+  // The text after a line's label (labels are padded to one column), or "" when no line starts with it.
+  auto after = [&](const std::string& label) {
+    std::istringstream lines(r.out);
+    for (std::string line; std::getline(lines, line);) {
+      const auto start = line.find_first_not_of(' ');
+      if (start != std::string::npos && line.compare(start, label.size(), label) == 0)
+        return line.substr(start + label.size());
+    }
+    return std::string();
+  };
+  // |printed − json| within half a unit of the printed value's last digit (%g with `digits` significant digits).
+  auto agrees = [](double printed, double json, int digits) {
+    const double unit = json == 0 ? 0 : std::pow(10.0, std::floor(std::log10(std::abs(json))) - (digits - 1));
+    return std::abs(printed - json) <= 0.5 * unit * (1 + 1e-9);
+  };
+  double a = 0, b = 0;
+  long n = 0, m = 0;
+  INFO(r.out);
+  REQUIRE(std::sscanf(after("output").c_str(), "%ld vertices, %ld triangles", &n, &m) == 2);
+  CHECK(n == q["vertices"].get<long>());
+  CHECK(m == q["triangles"].get<long>());
+  REQUIRE(std::sscanf(after("smallest angle, input metric").c_str(), "%lf deg (mean per triangle %lf deg)", &a, &b) ==
+          2);
+  CHECK(agrees(a, q["min_angle_deg"].get<double>(), 5));
+  CHECK(agrees(b, q["mean_min_angle_deg"].get<double>(), 5));
+  REQUIRE(std::sscanf(after("circumradius, input metric").c_str(), " max %lf, mean %lf", &a, &b) == 2);
+  CHECK(agrees(a, q["max_circumradius"].get<double>(), 6));
+  CHECK(agrees(b, q["mean_circumradius"].get<double>(), 6));
+  REQUIRE(std::sscanf(after("inverted triangles on the input").c_str(), "%ld of %ld checked", &n, &m) == 2);
+  CHECK(n == j["inverted_triangles"].get<long>());
+  CHECK(m == j["orientation_checked_triangles"].get<long>());
+  REQUIRE(std::sscanf(after("length vs located ends (one face)").c_str(), " max relative difference %lf over %ld edges",
+                      &a, &n) == 2);
+  CHECK(agrees(a, j["max_same_face_length_error"].get<double>(), 3));
+  CHECK(n == j["same_face_edges"].get<long>());
+  REQUIRE(std::sscanf(after("Gauss-Bonnet residual").c_str(), "%lf", &a) == 1);
+  CHECK(agrees(a, q["gauss_bonnet_residual"].get<double>(), 4));
+  REQUIRE(std::sscanf(after("total area").c_str(), "%lf (input %lf)", &a, &b) == 2);
+  CHECK(agrees(a, j["total_area"].get<double>(), 10));
+  CHECK(agrees(b, j["input_mesh"]["area"].get<double>(), 10));
 }
 
 TEST_CASE("remesh MESHFILE errors: one line naming the file and the element") {
@@ -121,8 +200,9 @@ TEST_CASE("remesh MESHFILE errors: one line naming the file and the element") {
   r = runCli("remesh " + kEight + " --eps 0.05 --refine-in input --uniform -o " + (dir() / "x.ply").string());
   CHECK(r.status == 1);
   CHECK(r.err.find("--uniform") != std::string::npos);
+  // A value outside --refine-in's set is a malformed command line: exit status 2 (docs/cli.md).
   r = runCli("remesh " + kEight + " --eps 0.05 --refine-in flat -o " + (dir() / "x.ply").string());
-  CHECK(r.status != 0);
+  CHECK(r.status == 2);
   CHECK(r.err.find("--refine-in") != std::string::npos);
   r = runCli("remesh " + kEight + " --eps 0.05 --smoothing 1 -o " + (dir() / "x.ply").string());
   CHECK(r.status == 1);

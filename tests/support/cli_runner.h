@@ -1,5 +1,5 @@
 // cli_runner.h — runs the `conformesh` executable from an end-to-end test (path in CONFORMESH_CLI) and captures its
-// exit status and output. Each test process gets its own scratch folder: CTest runs test cases in parallel.
+// exit status and output, in the test process's own scratch folder (scratch_dir.h): CTest runs test cases in parallel.
 #pragma once
 
 #include <sys/wait.h>
@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "support/scratch_dir.h"
 
 namespace conformesh::testing {
 
@@ -23,21 +25,6 @@ inline std::string slurp(const std::filesystem::path& p) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-// This test process's scratch directory, removed with its contents when the process exits (each process has its own).
-inline std::filesystem::path scratchDir() {
-  struct Scratch {
-    std::filesystem::path path =
-        std::filesystem::temp_directory_path() / ("conformesh_cli_test_" + std::to_string(getpid()));
-    Scratch() { std::filesystem::create_directories(path); }
-    ~Scratch() {
-      std::error_code ignored;
-      std::filesystem::remove_all(path, ignored);
-    }
-  };
-  static const Scratch scratch;
-  return scratch.path;
 }
 
 // Runs `conformesh ARGS` with a 60 s timeout, so that a hang fails the test instead of stalling the suite.

@@ -102,7 +102,9 @@ TEST_CASE("stopAfterStep sees the angle sums of each accepted step and can end t
   CHECK(report.newtonSteps == 2);
   CHECK(calls == 2);
   CHECK(sumsError == 0);
-  // Stopped where the unstopped flow stood after two steps: the residual entering step 3.
+  // Stopped where the unstopped flow stood after two steps: the residual entering step 3. Compared bit for bit across
+  // two runs: this relies on the flow's parallel loops splitting their work into fixed ranges that write disjoint data
+  // (two_threads.h, onTwoCores), so that the bits do not depend on which of the two threads ran which range.
   CHECK(report.maxResidual == lastSeen);
   CHECK(report.maxResidual == before[2]);
   CHECK(report.maxResidual > report.effectiveTolerance);
@@ -128,9 +130,20 @@ TEST_CASE("obtuse and near-degenerate inputs converge through Ptolemy flips, qua
   const std::vector<double> sums = angleSums(out);
   for (double s : sums) CHECK(std::abs(s - 2 * M_PI) < 1e-10);
   CHECK(countNonDelaunayEdges(out) == 0);
-  // Quadratic convergence in the last full steps: r_{k+1} ≤ C r_k² with a moderate C.
+  // Quadratic convergence in the last full steps: r_{k+1} ≤ C r_k² with a moderate C, for every step that ends in
+  // (1e-9, 1e-3) — below 1e-3 Newton is in its quadratic basin, above 1e-9 the residual is not yet round-off. onStep
+  // sees the residual before each step, so the residual after the last step (report.maxResidual) closes the history.
+  // At least one step must land in the window, or the loop would check nothing.
+  residuals.push_back(report.maxResidual);
+  int checked = 0;
   for (std::size_t k = 1; k < residuals.size(); ++k)
-    if (residuals[k] < 1e-3 && residuals[k] > 1e-9) CHECK(residuals[k] < 100 * residuals[k - 1] * residuals[k - 1]);
+    if (residuals[k] < 1e-3 && residuals[k] > 1e-9) {
+      INFO("step " << k - 1 << ": " << residuals[k - 1] << " -> " << residuals[k]);
+      CHECK(residuals[k] < 100 * residuals[k - 1] * residuals[k - 1]);
+      ++checked;
+    }
+  INFO(residuals.size() - 1 << " Newton steps");
+  REQUIRE(checked >= 1);
 }
 
 TEST_CASE("a flat torus with two cones of angle π and 3π is met exactly") {

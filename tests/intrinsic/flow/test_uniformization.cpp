@@ -27,6 +27,7 @@
 #include "conformesh/intrinsic/flow/uniformization.h"
 
 #include "support/flat_torus_modulus.h"
+#include "support/scratch_dir.h"
 #include "support/test_meshes.h"
 
 using namespace conformesh::intrinsic;
@@ -42,12 +43,13 @@ std::string dataFile(const std::string& name) {
 IntrinsicTriangulation roundTrip(const Uniformization& u, const std::string& name) {
   MeshData data = fromTriangulation(u.uniform);
   data.vertexProperties["lambda"] = u.lambda;
-  const std::string path = std::string(CONFORMESH_TEST_DATA_DIR) + "/uniformized-" + name + ".ply";
+  // In the test process's own scratch folder (removed at exit), not the shared data folder.
+  const std::string path = (conformesh::testing::scratchDir() / ("uniformized-" + name + ".ply")).string();
   writeMesh(data, path);
   const MeshData back = readMesh(path);
+  std::remove(path.c_str());
   REQUIRE(back.background == u.uniform.background);
   REQUIRE(back.vertexProperties.count("lambda") == 1);
-  std::remove(path.c_str());
   return toTriangulation(back);
 }
 

@@ -20,6 +20,8 @@
 #include "conformesh/intrinsic/metric/sampled_field_io.h"
 #include "conformesh/intrinsic/metric/sampled_metric.h"
 
+#include "support/scratch_dir.h"
+
 using namespace conformesh;
 using namespace conformesh::intrinsic;
 using Catch::Matchers::Contains;
@@ -27,11 +29,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path dir() {
-  const fs::path d = fs::temp_directory_path() / "conformesh_test_sampled_field_hdf5";
-  fs::create_directories(d);
-  return d;
-}
+// The test process's own scratch folder, removed at exit (CTest runs the test cases in parallel processes).
+fs::path dir() { return conformesh::testing::scratchDir(); }
 
 // What a test file holds; every member can be broken on purpose.
 struct RawField {

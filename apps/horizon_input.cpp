@@ -1,0 +1,60 @@
+// horizon_input.cpp — `--horizon` / `--spatial-metric` and the horizon report (horizon_input.h).
+#include "horizon_input.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "cli_common.h"
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/measure/horizon_diagnostics.h"
+#include "conformesh/intrinsic/metric/horizon_surface.h"
+
+namespace conformesh::apps {
+
+void addHorizonOptions(CLI::App* sub, HorizonInput& h) {
+  sub->add_option("--horizon", h.shape,
+                  "Strahlkorper shape JSON (center, coefficients) instead of a family. Details: docs/cli.md#horizons");
+  sub->add_option("--spatial-metric", h.spatialMetric,
+                  "3-metric of --horizon: kerr-schild, schwarzschild-isotropic or flat (--param M=, a=, cx=, ...). "
+                  "Details: docs/cli.md#horizons")
+      ->capture_default_str();
+}
+
+std::unique_ptr<intrinsic::SmoothMetric> loadMetricOrHorizon(const std::string& command, const std::string& family,
+                                                             const std::vector<std::string>& params,
+                                                             const std::string& field, const HorizonInput& h) {
+  if (!h.given()) return loadMetric(command, family, params, field);
+  if (!family.empty() || !field.empty())
+    throw InputError(command + ": --horizon replaces the FAMILY and --field; give only one of them");
+  progress("reading horizon shape " + h.shape + " in " + h.spatialMetric);
+  return intrinsic::makeHorizonMetric(h.shape, h.spatialMetric, parseParameters(params));
+}
+
+nlohmann::json horizonReportJson(const intrinsic::SmoothMetric& metric, double meshArea) {
+  progress("horizon diagnostics (area, circumferences, spin)");
+  const intrinsic::HorizonDiagnostics d = intrinsic::horizonDiagnostics(metric);
+  nlohmann::json j = {{"area", d.area},
+                      {"mesh_area", meshArea},
+                      {"irreducible_mass", d.irreducibleMass},
+                      {"equatorial_circumference", d.equatorialCircumference},
+                      {"polar_circumference", d.polarCircumference},
+                      {"min_polar_circumference", d.minPolarCircumference},
+                      {"circumference_ratio", d.circumferenceRatio},
+                      {"spin", std::isfinite(d.spin) ? nlohmann::json(d.spin) : nlohmann::json(nullptr)},
+                      {"curves", "smooth metric, chart equator and polar great circles"}};
+  return j;
+}
+
+void printHorizonReport(const nlohmann::json& h) {
+  std::printf("  %-34s %.12g (mesh %.12g)\n", "horizon area", h["area"].get<double>(), h["mesh_area"].get<double>());
+  std::printf("  %-34s %.12g\n", "irreducible mass sqrt(A/16pi)", h["irreducible_mass"].get<double>());
+  std::printf("  %-34s equatorial %.12g, polar %.12g\n", "circumferences", h["equatorial_circumference"].get<double>(),
+              h["polar_circumference"].get<double>());
+  if (h["spin"].is_null())
+    std::printf("  %-34s none (ratio %.6g outside Kerr's [0.608, 1])\n", "spin from C_polar/C_eq",
+                h["circumference_ratio"].get<double>());
+  else
+    std::printf("  %-34s %.9f\n", "spin from C_polar/C_eq", h["spin"].get<double>());
+}
+
+}  // namespace conformesh::apps

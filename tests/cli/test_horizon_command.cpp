@@ -1,0 +1,58 @@
+// End-to-end tests of `conformesh remesh --horizon SHAPE.json --spatial-metric ...`: the Kerr horizon of Kerr–Schild
+// coordinates (docs/examples/kerr-schild-a0.8.json, fitted at l_max = 16) reports Smarr's area 8πMr₊, the irreducible
+// mass √(Mr₊/2), the equatorial circumference 4πM and the spin 0.8; bad input exits 1 with the file named.
+#include <catch2/catch.hpp>
+
+#include "support/cli_runner.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+using conformesh::testing::runConformesh;
+
+namespace {
+const std::string kShape = std::string(CONFORMESH_SOURCE_DIR) + "/docs/examples/kerr-schild-a0.8.json";
+}
+
+TEST_CASE("remesh --horizon: the Kerr-Schild horizon a = 0.8 reports Smarr's geometry and its spin") {
+  const fs::path out = conformesh::testing::scratchDir() / "horizon.ply";
+  const auto r = runConformesh("-q remesh --horizon " + kShape +
+                               " --spatial-metric kerr-schild --param M=1 --param a=0.8 --eps 0.15 --no-check --json "
+                               "-o " + out.string());
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& h = j.at("horizon");
+  const double rp = 1.6;
+  // Smooth-metric figures at l_max = 16: the fit's error is ~1e-14 in the area (test_horizon_surface), the curve
+  // quadratures are spectral; 1e-9 leaves room for both.
+  CHECK(h.at("area").get<double>() == Approx(8 * M_PI * rp).epsilon(1e-9));
+  CHECK(h.at("irreducible_mass").get<double>() == Approx(std::sqrt(rp / 2)).epsilon(1e-9));
+  CHECK(h.at("equatorial_circumference").get<double>() == Approx(4 * M_PI).epsilon(1e-9));
+  CHECK(h.at("spin").get<double>() == Approx(0.8).margin(1e-6));
+  CHECK(h.at("polar_circumference").get<double>() < h.at("equatorial_circumference").get<double>());
+  // The mesh area: chords for arcs, O(ε²) ≈ 1 % at ε = 0.15.
+  CHECK(h.at("mesh_area").get<double>() == Approx(8 * M_PI * rp).epsilon(0.01));
+  CHECK(fs::exists(out));
+}
+
+TEST_CASE("remesh --horizon: bad input exits 1 (InputError) and names the file") {
+  const fs::path dir = conformesh::testing::scratchDir(), bad = dir / "bad_shape.json";
+  std::ofstream(bad) << R"({"center": [0, 0, 0], "coefficients": [[0, 0, 6.1], [2, 3, 0.1]]})";
+  auto r = runConformesh("-q remesh --horizon " + bad.string() + " --eps 0.2 -o " + (dir / "x.ply").string());
+  CHECK(r.status == 1);  // kExitFailure: main.cpp maps every InputError to 1 (2 is CLI usage)
+  CHECK(r.err.find("bad_shape.json") != std::string::npos);
+  CHECK(r.err.find("|m| <= l") != std::string::npos);
+  r = runConformesh("-q remesh --horizon " + kShape + " --spatial-metric kerr --eps 0.2 -o " +
+                    (dir / "x.ply").string());
+  CHECK(r.status == 1);  // kExitFailure: main.cpp maps every InputError to 1 (2 is CLI usage)
+  CHECK(r.err.find("unknown spatial metric 'kerr'") != std::string::npos);
+  r = runConformesh("-q remesh sphere --horizon " + kShape + " --eps 0.2 -o " + (dir / "x.ply").string());
+  CHECK(r.status == 1);  // kExitFailure: main.cpp maps every InputError to 1 (2 is CLI usage)
+  CHECK(r.err.find("--horizon replaces the FAMILY") != std::string::npos);
+}
