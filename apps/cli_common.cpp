@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -112,6 +113,35 @@ CLI::Validator untyped(CLI::Validator v) {
 
 CLI::Validator oneOf(std::vector<std::string> choices) {
   return untyped(CLI::IsMember(std::move(choices)));
+}
+
+std::string verifiedOutputPath(const refine::OutputVerification& check, bool keepFailed, const std::string& path,
+                               nlohmann::json& report) {
+  const std::string written = check.passed() ? path : keepFailed ? refine::failedOutputName(path) : "";
+  report["verification"] = {{"passed", check.passed()},
+                            {"failures", check.failures},
+                            {"faces_checked", check.facesChecked},
+                            {"area_relative_error", check.areaRelativeError},
+                            {"written", written}};
+  return written;
+}
+
+void rejectIfFailed(const refine::OutputVerification& check, const std::string& path, const std::string& keptPath,
+                    bool json, const nlohmann::json& report) {
+  if (check.passed()) return;
+  if (json) printJson(report);
+  throw OutputRejected(check.message() + (keptPath.empty() ? " (" + path + " not written; --keep-failed writes it as " +
+                                                                 refine::failedOutputName(path) + ")"
+                                                           : " (written as " + keptPath + ")"));
+}
+
+void printNotices(const std::vector<std::string>& notices) {
+  for (const std::string& n : notices) std::fprintf(stderr, "conformesh: notice: %s\n", n.c_str());
+}
+
+void addKeepFailedOption(CLI::App* sub, bool& keepFailed) {
+  sub->add_flag("--keep-failed", keepFailed,
+                "An output that fails verification is written as NAME.failed.EXT (exit 3)");
 }
 
 }  // namespace conformesh::apps
