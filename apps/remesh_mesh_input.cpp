@@ -67,6 +67,7 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
       {"orientation_checked_triangles", r.orientationChecked},
       {"same_face_edges", r.sameFaceEdges},
       {"max_same_face_length_error", r.maxSameFaceLengthError},
+      {"max_same_face_scaled_error", r.maxSameFaceScaledError},
       {"loop_edges", r.loopEdges},
       {"total_area", intrinsic::totalArea(r.mesh)},
       {"seconds",

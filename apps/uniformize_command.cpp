@@ -12,6 +12,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/refine/pipeline/output_verification.h"
 
 namespace conformesh::apps {
 
@@ -22,7 +23,7 @@ struct UniformizeOptions {
   std::string method = "yamabe";
   double tolerance = 1e-10;
   int maxSteps = 100;
-  bool json = false;
+  bool json = false, keepFailed = false;
 };
 
 nlohmann::json correspondenceJson(const intrinsic::FlowCorrespondence& c) {
@@ -66,7 +67,11 @@ void runUniformize(const UniformizeOptions& o) {
   out.vertexProperties["lambda"] = u.lambda;
   out.comments.push_back("uniformized by conformesh (" + o.method + " flow): target " +
                          intrinsic::toString(u.report.target));
-  intrinsic::writeMesh(out, o.output);
+  const refine::OutputVerification check = refine::verifyUniformization(u);
+  nlohmann::json verification;
+  const std::string written = verifiedOutputPath(check, o.keepFailed, o.output, verification);
+  if (!written.empty()) intrinsic::writeMesh(out, written);
+  rejectIfFailed(check, o.output, written, false, verification);
   if (!o.correspondence.empty()) {
     std::ofstream file(o.correspondence);
     if (!file) throw InputError(o.correspondence + ": cannot open for writing");
@@ -141,6 +146,7 @@ void registerUniformizeCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--correspondence", o->correspondence, "Write the T0* -> T0 flip log (JSON) here");
   sub->add_flag("--json", o->json, "Print the report as JSON");
+  addKeepFailedOption(sub, o->keepFailed);
   sub->callback([o] { runUniformize(*o); });
 }
 

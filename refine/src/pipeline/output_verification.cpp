@@ -66,12 +66,13 @@ OutputVerification verifyMeshRemesh(const MeshRemeshResult& r, const IntrinsicTr
                          (f >= 0 ? describeFace(r.mesh.mesh, f) + " in input-side face " + std::to_string(face)
                                  : std::string("(not recorded)")));
   }
-  if (!(r.maxSameFaceLengthError <= tol.sameFaceLength)) {
+  if (!(r.maxSameFaceScaledError <= tol.sameFaceLength)) {
     const auto [e, face] = r.worstSameFaceEdge;
     std::ostringstream s;
     s.precision(3);
     s << "output edge " << e << " differs from the straight distance of its located ends in face " << face << " by "
-      << r.maxSameFaceLengthError << " relative (tolerance " << tol.sameFaceLength << ")";
+      << r.maxSameFaceScaledError << " relative to max(edge, the face's longest side) (tolerance " << tol.sameFaceLength
+      << ")";
     v.failures.push_back(s.str());
   }
   checkArea(totalArea(r.mesh), totalArea(input), tol.area, v);
@@ -99,7 +100,8 @@ OutputVerification verifyRefinement(const IntrinsicTriangulation& input, const R
                          std::to_string(l.face) + " of " + std::to_string(nf) + ")");
     break;
   }
-  checkArea(totalArea(r.triangulation), totalArea(input), tol.area, v);
+  // Boundary loops split on their circle grow the domain from the chords towards the circle: no equality there.
+  if (r.statistics.circleLoops == 0) checkArea(totalArea(r.triangulation), totalArea(input), tol.area, v);
   return v;
 }
 

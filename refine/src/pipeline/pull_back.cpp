@@ -314,8 +314,11 @@ void checkAgainstLocations(const IntrinsicTriangulation& t0, const IntrinsicTria
     }
     ++out.sameFaceEdges;
     const double error = std::abs(t1.edgeLengths[e] - d) / t1.edgeLengths[e];
-    if (error > out.maxSameFaceLengthError) {
-      out.maxSameFaceLengthError = error;
+    out.maxSameFaceLengthError = std::max(out.maxSameFaceLengthError, error);
+    const double side = std::max({t0.length(3 * face), t0.length(3 * face + 1), t0.length(3 * face + 2)});
+    const double scaled = std::abs(t1.edgeLengths[e] - d) / std::max(t1.edgeLengths[e], side);
+    if (scaled > out.maxSameFaceScaledError) {
+      out.maxSameFaceScaledError = scaled;
       out.worstSameFaceEdge = {e, face};
     }
   }

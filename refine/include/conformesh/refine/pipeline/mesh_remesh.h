@@ -86,7 +86,10 @@ struct MeshRemeshResult {
   // edge's length and the straight distance of its located ends there.
   int sameFaceEdges = 0;
   double maxSameFaceLengthError = 0;
-  // The first inverted output triangle and the edge of the largest same-face error, each with the T0 face it was
+  // The same difference relative to max(edge length, the face's longest side): the located ends' round-off scales
+  // with the face (barycentric coordinates), so an edge far shorter than its face has a larger relative error.
+  double maxSameFaceScaledError = 0;
+  // The first inverted output triangle and the edge of the largest scaled same-face error, each with the T0 face it was
   // checked in ({−1, −1}: none). T0 is the input after subdivision (input route: the input itself).
   std::array<int, 2> firstInvertedTriangle{-1, -1};
   std::array<int, 2> worstSameFaceEdge{-1, -1};
