@@ -1,8 +1,11 @@
 // cli_common.cpp — shared plumbing of the conformesh subcommands (see cli_common.h).
 #include "cli_common.h"
 
+#include "conformesh/refine/pipeline/remesh_json.h"
+
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -12,6 +15,7 @@
 #include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/metric/sampled_field_io.h"
 #include "conformesh/intrinsic/metric/sampled_metric.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::apps {
 
@@ -112,6 +116,32 @@ CLI::Validator untyped(CLI::Validator v) {
 
 CLI::Validator oneOf(std::vector<std::string> choices) {
   return untyped(CLI::IsMember(std::move(choices)));
+}
+
+std::string verifiedOutputPath(const refine::OutputVerification& check, bool keepFailed, const std::string& path,
+                               nlohmann::json& report) {
+  const std::string written = check.passed() ? path : keepFailed ? refine::failedOutputName(path) : "";
+  report["verification"] = refine::verificationJson(check);
+  report["verification"]["written"] = written;
+  return written;
+}
+
+void rejectIfFailed(const refine::OutputVerification& check, const std::string& path, const std::string& keptPath,
+                    bool json, const nlohmann::json& report) {
+  if (check.passed()) return;
+  if (json) printJson(report);
+  throw OutputRejected(check.message() + (keptPath.empty() ? " (" + path + " not written; --keep-failed writes it as " +
+                                                                 refine::failedOutputName(path) + ")"
+                                                           : " (written as " + keptPath + ")"));
+}
+
+void printNotices(const std::vector<std::string>& notices) {
+  for (const std::string& n : notices) std::fprintf(stderr, "conformesh: notice: %s\n", n.c_str());
+}
+
+void addKeepFailedOption(CLI::App* sub, bool& keepFailed) {
+  sub->add_flag("--keep-failed", keepFailed,
+                "An output that fails verification is written as NAME.failed.EXT (exit 3)");
 }
 
 }  // namespace conformesh::apps

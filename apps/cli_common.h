@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,12 +16,34 @@
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
+#include "conformesh/refine/pipeline/output_verification.h"
 
 namespace conformesh::apps {
 
-// Exit statuses: 0 success, 1 bad input or failed computation (message on stderr), 2 bad command line (CLI11).
+// Exit statuses: 0 success, 1 bad input or failed computation (message on stderr), 2 bad command line (CLI11),
+// 3 an output that failed its verification (refine/pipeline/output_verification.h; kept as NAME.failed.EXT with
+// --keep-failed).
 constexpr int kExitFailure = 1;
 constexpr int kExitUsage = 2;
+constexpr int kExitVerification = 3;
+
+// An output that failed its verification; main prints "conformesh: error: <message>" and exits kExitVerification.
+struct OutputRejected : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Where a command writes its output after `check`: `path` when it passed; refine::failedOutputName(path) when it
+// failed and `keepFailed`; "" (write nothing) otherwise. Records report["verification"] (passed, failures, written).
+std::string verifiedOutputPath(const refine::OutputVerification& check, bool keepFailed, const std::string& path,
+                               nlohmann::json& report);
+// After the outputs (if any) are written: when `check` failed, prints the JSON report if `json` and throws
+// OutputRejected naming the failures and the kept file (or that `path` was not written).
+void rejectIfFailed(const refine::OutputVerification& check, const std::string& path, const std::string& keptPath,
+                    bool json, const nlohmann::json& report);
+// Each notice as "conformesh: notice: ..." on stderr, also in quiet mode (a result the user did not ask for).
+void printNotices(const std::vector<std::string>& notices);
+// Registers `--keep-failed` on `sub`.
+void addKeepFailedOption(CLI::App* sub, bool& keepFailed);
 
 // Prints `j` to stdout, indented, followed by a newline.
 void printJson(const nlohmann::json& j);

@@ -1,5 +1,6 @@
 // main.cpp — the `conformesh` command: a root CLI11 app with one subcommand per pipeline stage. Library errors become
-// one line on stderr ("conformesh: error: FILE:LINE: ...") and exit status 1; command-line mistakes exit 2.
+// one line on stderr ("conformesh: error: FILE:LINE: ...") and exit status 1; command-line mistakes exit 2; an output
+// that fails its verification (output_verification.h) exits 3.
 #include <exception>
 #include <iostream>
 
@@ -39,6 +40,9 @@ int main(int argc, char** argv) {
     // CLI11 prints the message (or the help) and has its own codes per kind of mistake (104–113); the documented
     // status for every malformed command line is 2, and 0 for --help.
     return app.exit(e) == 0 ? 0 : conformesh::apps::kExitUsage;
+  } catch (const conformesh::apps::OutputRejected& e) {
+    std::cerr << "conformesh: error: " << e.what() << '\n';
+    return conformesh::apps::kExitVerification;
   } catch (const conformesh::InputError& e) {
     std::cerr << "conformesh: error: " << e.what() << '\n';
     return conformesh::apps::kExitFailure;

@@ -16,6 +16,7 @@
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
 #include "conformesh/refine/trace/input_location.h"
+#include "conformesh/refine/pipeline/output_verification.h"
 
 namespace conformesh::apps {
 
@@ -31,6 +32,7 @@ struct RefineArgs {
   std::int64_t maxInsertions = 50'000'000;
   int smoothing = refine::RefineOptions{}.smoothingPasses;
   std::string smoothingRule = "odt";
+  bool keepFailed = false;
 };
 
 void run(const RefineArgs& args) {
@@ -93,8 +95,14 @@ void run(const RefineArgs& args) {
     out.positions = refine::interpolatePositions(tri.mesh, data.positions, r.locations);
   intrinsic::WriteOptions wo;
   if (args.ascii) wo.plyEncoding = intrinsic::PlyEncoding::Ascii;
-  progress("writing " + args.output);
-  intrinsic::writeMesh(out, args.output, wo);
+  const refine::OutputVerification check = refine::verifyRefinement(tri, r);
+  nlohmann::json verification;
+  const std::string written = verifiedOutputPath(check, args.keepFailed, args.output, verification);
+  if (!written.empty()) {
+    progress("writing " + written);
+    intrinsic::writeMesh(out, written, wo);
+  }
+  rejectIfFailed(check, args.output, written, false, verification);
 
   const refine::RefineStatistics& s = r.statistics;
   if (args.json) {
@@ -174,6 +182,7 @@ void registerRefineCommand(CLI::App& app) {
   sub->add_option("--max-insertions", args->maxInsertions, "Stop with an error after this many insertions")
       ->capture_default_str();
   sub->add_option("-o,--output", args->output, "Output .ply (edge lengths, background, input locations)")->required();
+  addKeepFailedOption(sub, args->keepFailed);
   sub->add_flag("--json", args->json, "Print the statistics and quality report as JSON on stdout");
   sub->add_flag("--ascii", args->ascii, "Write ASCII PLY instead of binary little-endian PLY");
   sub->callback([args] { run(*args); });

@@ -15,6 +15,7 @@
 #include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
 #include "horizon_input.h"
+#include "conformesh/refine/pipeline/output_verification.h"
 #include "remesh_mesh_input.h"
 
 namespace conformesh::apps {
@@ -38,19 +39,25 @@ struct RemeshArgs {
   std::string refineIn = "uniformized";
   std::string segmentRule = "ruppert";
   HorizonInput horizon;
+  bool keepFailed = false;
+  double epsilonRelative = 0;
+  std::int64_t maxVertices = refine::MeshRemeshOptions{}.maxVertices;
 };
 
 void run(const RemeshArgs& a) {
   if (isMeshFilePath(
           a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh_input.h)
     return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
-                          a.refineIn, a.smoothing, a.smoothingRule, a.segmentRule});
+                          a.refineIn, a.smoothing, a.smoothingRule, a.segmentRule, a.keepFailed, a.epsilonRelative,
+                          a.maxVertices});
   if (a.refineIn != "uniformized")
     throw InputError("remesh: --refine-in " + a.refineIn +
                      " applies to mesh files; a smooth metric is refined uniformized");
   const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetricOrHorizon("remesh", a.family, a.params, a.field, a.horizon);
   refine::RemeshOptions o;
   o.epsilon = a.epsilon;
+  o.epsilonRelative = a.epsilonRelative;
+  o.maxVertices = a.maxVertices;
   o.ratioBound = a.ratio;
   o.uniform = a.uniform;
   o.t0Resolution = a.t0Resolution;
@@ -60,7 +67,8 @@ void run(const RemeshArgs& a) {
   o.refinement.segmentRule = refine::parseSegmentRule(a.segmentRule);
   o.progress = [](const std::string& s) { progress(s); };
   const refine::RemeshResult r = refine::remeshMetric(*metric, o);
-  intrinsic::MeshData data = refine::toMeshData(r, *metric, a.epsilon);
+  intrinsic::MeshData data = refine::toMeshData(r, *metric, r.epsilon);
+  printNotices(r.notices);
 
   nlohmann::json j = refine::metricRemeshJson(r, *metric, o);
   if (a.horizon.given()) j["horizon"] = horizonReportJson(*metric, intrinsic::totalArea(r.mesh));
@@ -73,8 +81,13 @@ void run(const RemeshArgs& a) {
     j["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);
   }
-  writeMeshOutputs(
-      data, a.output, a.ascii, a.vtk, [&] { return refine::toVtkMesh(data, r); }, j);
+  const refine::OutputVerification check = refine::verifyMetricRemesh(r);
+  const std::string written = verifiedOutputPath(check, a.keepFailed, a.output, j);
+  if (!written.empty())
+    writeMeshOutputs(
+        data, written, a.ascii, a.vtk.empty() || check.passed() ? a.vtk : refine::failedOutputName(a.vtk),
+        [&] { return refine::toVtkMesh(data, r); }, j);
+  rejectIfFailed(check, a.output, written, a.json, j);
   if (a.json) {
     printJson(j);
     return;
@@ -85,7 +98,7 @@ void run(const RemeshArgs& a) {
   std::printf("  %-34s %.3f deg (mean per triangle %.3f deg)\n", "smallest angle, original metric", q.minAngleDeg,
               q.meanMinAngleDeg);
   std::printf("  %-34s max %.6g, mean %.6g (eps %.6g)\n", "circumradius, original metric", q.maxCircumradius,
-              q.meanCircumradius, a.epsilon);
+              q.meanCircumradius, r.epsilon);
   std::printf("  %-34s %d\n", "inverted triangles in the map back", r.invertedTriangles);
   std::printf("  %-34s %.3e\n", "Gauss-Bonnet residual", q.gaussBonnetResidual);
   if (j.contains("gaussian_curvature_measure")) {
@@ -114,7 +127,11 @@ void registerRemeshCommand(CLI::App& app) {
   addFieldOption(sub, a->field);
   addHorizonOptions(sub, a->horizon);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
-  sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric")->required();
+  auto* eps = sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric");
+  sub->add_option("--eps-rel", a->epsilonRelative, "Circumradius bound as a fraction of sqrt(area) (instead of --eps)")
+      ->excludes(eps);
+  sub->add_option("--max-vertices", a->maxVertices, "Refuse an eps whose expected vertex count exceeds this")
+      ->capture_default_str();
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (sqrt 2: 20.7 deg)")
       ->capture_default_str();
   sub->add_flag("--uniform", a->uniform, "Ignore the conformal factor (uniform in the uniformized domain)");
@@ -137,6 +154,7 @@ void registerRemeshCommand(CLI::App& app) {
       ->check(oneOf({"uniformized", "input"}))
       ->capture_default_str();
   sub->add_flag("--ascii", a->ascii, "Write ASCII PLY instead of binary");
+  addKeepFailedOption(sub, a->keepFailed);
   sub->callback([a] { run(*a); });
 }
 

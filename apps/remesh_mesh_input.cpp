@@ -14,6 +14,7 @@
 #include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
+#include "conformesh/refine/pipeline/output_verification.h"
 
 namespace conformesh::apps {
 
@@ -29,6 +30,8 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
   const refine::MeshInput in = refine::meshInputFromData(loadMesh(a.input));
   refine::MeshRemeshOptions o;
   o.epsilon = a.epsilon;
+  o.epsilonRelative = a.epsilonRelative;
+  o.maxVertices = a.maxVertices;
   o.ratioBound = a.ratio;
   o.uniform = a.uniform;
   o.refineIn = refine::parseRefineMetric(a.refineIn);
@@ -44,7 +47,8 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
   o.refinement.segmentRule = refine::parseSegmentRule(a.segmentRule);
   o.progress = [](const std::string& s) { progress(s); };
   const refine::MeshRemeshResult r = refine::remeshMesh(in.triangulation, in.positions, o);
-  intrinsic::MeshData data = refine::toMeshData(r, in.source, a.epsilon);
+  intrinsic::MeshData data = refine::toMeshData(r, in.source, r.epsilon);
+  printNotices(r.notices);
 
   nlohmann::json j = refine::meshRemeshJson(r, in.triangulation, in.source, o);
   if (!a.noCheck) {
@@ -55,8 +59,13 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
     j["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);
   }
-  writeMeshOutputs(
-      data, a.output, a.ascii, a.vtk, [&] { return refine::toVtkMesh(data, r); }, j);
+  const refine::OutputVerification check = refine::verifyMeshRemesh(r, in.triangulation);
+  const std::string written = verifiedOutputPath(check, a.keepFailed, a.output, j);
+  if (!written.empty())
+    writeMeshOutputs(
+        data, written, a.ascii, a.vtk.empty() || check.passed() ? a.vtk : refine::failedOutputName(a.vtk),
+        [&] { return refine::toVtkMesh(data, r); }, j);
+  rejectIfFailed(check, a.output, written, a.json, j);
   if (a.json) {
     printJson(j);
     return;
@@ -69,7 +78,7 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
   std::printf("  %-34s %.3f deg (mean per triangle %.3f deg)\n", "smallest angle, input metric", q.minAngleDeg,
               q.meanMinAngleDeg);
   std::printf("  %-34s max %.6g, mean %.6g (eps %.6g)\n", "circumradius, input metric", q.maxCircumradius,
-              q.meanCircumradius, a.epsilon);
+              q.meanCircumradius, r.epsilon);
   std::printf("  %-34s %d of %d checked\n", "inverted triangles on the input", r.invertedTriangles,
               r.orientationChecked);
   std::printf("  %-34s max relative difference %.2e over %d edges\n", "length vs located ends (one face)",

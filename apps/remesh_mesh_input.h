@@ -22,6 +22,9 @@ struct MeshRemeshCliArgs {
   int smoothing = 0;                     // smoothing passes, input route only (the uniformized route is unsmoothed)
   std::string smoothingRule = "odt";     // refine::parseSmoothingRule
   std::string segmentRule = "ruppert";   // refine::parseSegmentRule
+  bool keepFailed = false;               // an output failing verification is written as NAME.failed.EXT
+  double epsilonRelative = 0;            // --eps-rel: ε = this · √(input area) when > 0
+  std::int64_t maxVertices = 0;          // refine::MeshRemeshOptions::maxVertices
 };
 
 void runRemeshMesh(const MeshRemeshCliArgs& args);

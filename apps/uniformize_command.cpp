@@ -13,6 +13,7 @@
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
+#include "conformesh/refine/pipeline/output_verification.h"
 
 namespace conformesh::apps {
 
@@ -23,7 +24,7 @@ struct UniformizeOptions {
   std::string method = "yamabe";
   double tolerance = 1e-10;
   int maxSteps = 100;
-  bool json = false;
+  bool json = false, keepFailed = false;
 };
 
 nlohmann::json correspondenceJson(const intrinsic::FlowCorrespondence& c) {
@@ -67,7 +68,16 @@ void runUniformize(const UniformizeOptions& o) {
   out.vertexProperties["lambda"] = u.lambda;
   out.comments.push_back("uniformized by conformesh (" + o.method + " flow): target " +
                          intrinsic::toString(u.report.target));
-  intrinsic::writeMesh(out, o.output);
+  // Figures a reader can check: the worst interior angle-sum error in the written geometry and Gauss–Bonnet.
+  nlohmann::json j = refine::uniformizedJson(u);
+  j["input"] = o.input;
+  j["output"] = o.output;
+  j["method"] = o.method;
+  if (!o.correspondence.empty()) j["correspondence"] = o.correspondence;
+  const refine::OutputVerification check = refine::verifyUniformization(u);
+  const std::string written = verifiedOutputPath(check, o.keepFailed, o.output, j);
+  if (!written.empty()) intrinsic::writeMesh(out, written);
+  rejectIfFailed(check, o.output, written, o.json, j);
   if (!o.correspondence.empty()) {
     std::ofstream file(o.correspondence);
     if (!file) throw InputError(o.correspondence + ": cannot open for writing");
@@ -75,12 +85,6 @@ void runUniformize(const UniformizeOptions& o) {
     if (!file) throw InputError(o.correspondence + ": write failed");
   }
 
-  // Figures a reader can check: the worst interior angle-sum error in the written geometry and Gauss–Bonnet.
-  nlohmann::json j = refine::uniformizedJson(u);
-  j["input"] = o.input;
-  j["output"] = o.output;
-  j["method"] = o.method;
-  if (!o.correspondence.empty()) j["correspondence"] = o.correspondence;
   if (o.json) {
     printJson(j);
     return;
@@ -123,6 +127,7 @@ void registerUniformizeCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--correspondence", o->correspondence, "Write the T0* -> T0 flip log (JSON) here");
   sub->add_flag("--json", o->json, "Print the report as JSON");
+  addKeepFailedOption(sub, o->keepFailed);
   sub->callback([o] { runUniformize(*o); });
 }
 

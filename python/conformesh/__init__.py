@@ -29,6 +29,7 @@ from ._conformesh import (
     read,
     remesh,
     uniformize,
+    VerificationError,
     write,
 )
 from . import metrics
@@ -43,6 +44,7 @@ __all__ = [
     "layout",
     "InputError",
     "RemeshResult",
+    "VerificationError",
     "Triangulation",
     "UniformizeResult",
     "__version__",

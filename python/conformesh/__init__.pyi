@@ -8,6 +8,7 @@ from ._conformesh import (
     LayoutResult as LayoutResult,
     RemeshResult as RemeshResult,
     Triangulation as Triangulation,
+    VerificationError as VerificationError,
     UniformizeResult as UniformizeResult,
     convergence as convergence,
     layout as layout,

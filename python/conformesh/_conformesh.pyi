@@ -13,6 +13,7 @@ Progress = Optional[Callable[[str], None]]
 
 class InputError(ValueError): ...
 class ConvergenceError(RuntimeError): ...
+class VerificationError(RuntimeError): ...
 
 class Triangulation:
     @staticmethod
@@ -70,7 +71,7 @@ class UniformizeResult:
     report: Dict[str, Any]
 
 def uniformize(tri: Triangulation, *, tolerance: float = ..., max_steps: int = ..., method: str = ...,
-               progress: Progress = ...) -> UniformizeResult: ...
+               keep_failed: bool = ..., progress: Progress = ...) -> UniformizeResult: ...
 
 class RemeshResult:
     triangulation: Triangulation
@@ -87,7 +88,7 @@ class RemeshResult:
 def remesh(source: Union["metrics.Metric", Triangulation], eps: float, check: bool = ..., *, ratio: float = ...,
            uniform: bool = ..., t0_resolution: int = ..., disk_target: str = ..., smoothing: Optional[int] = ...,
            smoothing_rule: str = ..., segment_rule: str = ..., refine_in: str = ..., region: str = ...,
-           progress: Progress = ...) -> RemeshResult: ...
+           keep_failed: bool = ..., progress: Progress = ...) -> RemeshResult: ...
 
 class ConvergenceResult:
     rows: List[Dict[str, Any]]

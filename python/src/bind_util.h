@@ -7,6 +7,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -19,6 +20,12 @@
 namespace conformesh::python {
 
 namespace py = pybind11;
+
+// An output that failed its verification (refine/pipeline/output_verification.h): conformesh.VerificationError, a
+// RuntimeError; the CLI's exit 3.
+struct VerificationFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // Raises conformesh.InputError (a ValueError) with `message`.
 [[noreturn]] void inputError(const std::string& message);

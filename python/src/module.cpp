@@ -16,6 +16,9 @@ PYBIND11_MODULE(_conformesh, m) {
       .doc() = "Malformed or inadmissible input (a ValueError): the message names the file, line or element.";
   py::register_exception<conformesh::ConvergenceError>(m, "ConvergenceError", PyExc_RuntimeError)
       .doc() = "An iterative method stopped without reaching its tolerance (a RuntimeError).";
+  py::register_exception<conformesh::python::VerificationFailed>(m, "VerificationError", PyExc_RuntimeError)
+      .doc() = "An output failed its verification before being returned (a RuntimeError): the message names the "
+               "element, expected against found.";
   conformesh::python::bindTriangulation(m);
   py::module_ metrics = m.def_submodule("metrics", "Smooth metrics: families, sampled fields.");
   conformesh::python::bindMetrics(metrics);

@@ -38,8 +38,15 @@ struct UniformizeResult {
   py::object conformalFactor, geometry, positions, report;
 };
 
+// The CLI's verification before exit 0 (output_verification.h), in the report as report['verification']; a failed
+// check raises VerificationError (the CLI's exit 3) unless keep_failed=True, which returns the result as it is.
+void verifyOrRaise(const refine::OutputVerification& check, bool keepFailed, nlohmann::json& report) {
+  report["verification"] = refine::verificationJson(check);
+  if (!check.passed() && !keepFailed) throw VerificationFailed(check.message() + " (keep_failed=True returns it)");
+}
+
 UniformizeResult uniformize(const TriangulationPtr& in, double tolerance, int maxSteps, const std::string& method,
-                            const py::object& progress) {
+                            bool keepFailed, const py::object& progress) {
   if (!(tolerance > 0)) inputError("uniformize: tolerance must be > 0");
   if (maxSteps < 1) inputError("uniformize: max_steps must be >= 1");
   if (method != "yamabe" && method != "circle-packing" && method != "inversive-distance")
@@ -68,6 +75,7 @@ UniformizeResult uniformize(const TriangulationPtr& in, double tolerance, int ma
   nlohmann::json j = refine::uniformizedJson(u);
   j["input"] = in->source;
   j["method"] = method;
+  verifyOrRaise(refine::verifyUniformization(u), keepFailed, j);
   UniformizeResult out;
   out.geometry = py::str(geometryName(u.uniform.background));
   auto t = fromIntrinsic(std::move(u.uniform), in->source + " uniformized");
@@ -100,7 +108,9 @@ struct RemeshArgs {
   std::string diskTarget = "auto";
   py::object smoothing = py::none();
   std::string smoothingRule = "odt", segmentRule = "ruppert", refineIn = "uniformized", region = "ball";
+  bool keepFailed = false;
 };
+
 
 void wireRefinementChecks(refine::RefineOptions& ref, CallGuard& guard) {
   ref.progressEvery = kRefineCheckEvery;
@@ -141,7 +151,7 @@ RemeshResult remeshMetric(const Metric& metric, const RemeshArgs& a, CallGuard& 
     py::gil_scoped_release release;
     *shared = refine::remeshMetric(*metric.metric, o);
     const refine::RemeshResult& r = *shared;
-    *data = refine::toMeshData(r, *metric.metric, a.eps);
+    *data = refine::toMeshData(r, *metric.metric, r.epsilon);
     j = refine::metricRemeshJson(r, *metric.metric, o);  // the keys of `conformesh remesh FAMILY --json`
     if (a.check) {
       guard.step("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
@@ -157,6 +167,7 @@ RemeshResult remeshMetric(const Metric& metric, const RemeshArgs& a, CallGuard& 
       data->vertexProperties["relative_error"] = c.relativeError;
     }
   }
+  verifyOrRaise(refine::verifyMetricRemesh(*shared), a.keepFailed, j);
   RemeshResult out;
   const refine::RemeshResult& r = *shared;
   out.data = data;
@@ -200,7 +211,7 @@ RemeshResult remeshTriangulation(const Triangulation& in, const RemeshArgs& a, C
     py::gil_scoped_release release;
     *shared = refine::remeshMesh(in.tri, in.positions, o);
     const refine::MeshRemeshResult& r = *shared;
-    *data = refine::toMeshData(r, in.source, a.eps);
+    *data = refine::toMeshData(r, in.source, r.epsilon);
     j = refine::meshRemeshJson(r, in.tri, in.source, o);  // the keys of `conformesh remesh MESHFILE --json`
     if (a.check) {
       guard.step("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
@@ -214,6 +225,7 @@ RemeshResult remeshTriangulation(const Triangulation& in, const RemeshArgs& a, C
       data->vertexProperties["relative_error"] = c.relativeError;
     }
   }
+  verifyOrRaise(refine::verifyMeshRemesh(*shared, in.tri), a.keepFailed, j);
   RemeshResult out;
   const refine::MeshRemeshResult& r = *shared;
   out.data = data;
@@ -239,12 +251,12 @@ RemeshResult remeshTriangulation(const Triangulation& in, const RemeshArgs& a, C
 RemeshResult remesh(const py::object& source, double eps, bool check, double ratio, bool uniform, int t0Resolution,
                     const std::string& diskTarget, const py::object& smoothing, const std::string& smoothingRule,
                     const std::string& segmentRule, const std::string& refineIn, const std::string& region,
-                    const py::object& progress) {
+                    bool keepFailed, const py::object& progress) {
   if (!(eps > 0) || !std::isfinite(eps)) inputError("remesh: eps = " + formatNumber(eps) + " (expected a finite eps > 0)");
   if (!smoothing.is_none() && !py::isinstance<py::int_>(smoothing))
     inputError("remesh: smoothing must be an int or None");
   RemeshArgs a{eps, check, ratio, uniform, t0Resolution, diskTarget, smoothing, smoothingRule, segmentRule, refineIn,
-               region};
+               region, keepFailed};
   CallGuard guard(progress);
   if (py::isinstance<Metric>(source)) return remeshMetric(source.cast<const Metric&>(), a, guard);
   if (py::isinstance<Triangulation>(source)) return remeshTriangulation(source.cast<const Triangulation&>(), a, guard);
@@ -281,13 +293,14 @@ void bindPipelines(py::module_& m) {
         return "<conformesh.UniformizeResult " + py::str(r.geometry).cast<std::string>() + ">";
       });
   m.def("uniformize", &uniformize, py::arg("tri"), py::kw_only(), py::arg("tolerance") = 1e-10,
-        py::arg("max_steps") = 100, py::arg("method") = "yamabe", py::arg("progress") = py::none(), R"doc(
+        py::arg("max_steps") = 100, py::arg("method") = "yamabe", py::arg("keep_failed") = false, py::arg("progress") = py::none(), R"doc(
 Uniformizes ``tri`` by the discrete Ricci (Yamabe) flow of vertex scaling (paper §4.1; `conformesh uniformize`):
 closed genus 0 to the unit sphere, genus 1 to a flat torus of area 1, genus >= 2 hyperbolic, genus 0 with boundary
 to a circle domain, genus >= 1 with boundary hyperbolic with geodesic boundary. ``tolerance`` bounds the angle-sum
 residual (radians); method 'circle-packing' or 'inversive-distance' selects the circle-packing flows (closed genus
 >= 1). ``progress(str)`` is called after every Newton step; the GIL is released and Ctrl-C raises KeyboardInterrupt
-at the next step. Raises InputError (more than one component, bad lengths) or ConvergenceError.)doc");
+at the next step. T0* is verified as the CLI verifies it (report['verification']): a failure raises VerificationError
+unless keep_failed=True. Raises InputError (more than one component, bad lengths) or ConvergenceError.)doc");
 
   py::class_<RemeshResult>(m, "RemeshResult", "What conformesh.remesh returns.")
       .def_readonly("triangulation", &RemeshResult::triangulation,
@@ -321,7 +334,7 @@ at the next step. Raises InputError (more than one component, bad lengths) or Co
         py::arg("ratio") = 1.4142135623730951, py::arg("uniform") = false, py::arg("t0_resolution") = 0,
         py::arg("disk_target") = "auto", py::arg("smoothing") = py::none(), py::arg("smoothing_rule") = "odt",
         py::arg("segment_rule") = "ruppert", py::arg("refine_in") = "uniformized", py::arg("region") = "ball",
-        py::arg("progress") = py::none(), R"doc(
+        py::arg("keep_failed") = false, py::arg("progress") = py::none(), R"doc(
 The whole pipeline (`conformesh remesh`): on a metrics.Metric, discretize -> uniformize -> Delaunay-refine with
 circumradii <= eps (in the original metric) and circumradius/shortest edge <= ratio -> pull back, every output edge
 with its length in the original metric; on a Triangulation (Euclidean, one component), uniformize it, refine and pull
@@ -330,7 +343,9 @@ With check=True the Gaussian curvature measure check runs (report['gaussian_curv
 'relative_error'). Options as the CLI's: t0_resolution (0 = automatic), disk_target ('auto', 'circle',
 'keep-boundary'), smoothing (passes; None = the CLI's default), smoothing_rule ('odt', 'centroid'), segment_rule
 ('ruppert', 'chew'), region ('ball', 'union'). ``progress(str)`` receives the stage lines; the GIL is released and
-Ctrl-C raises KeyboardInterrupt between steps (nothing is written). Raises InputError or ConvergenceError.)doc");
+Ctrl-C raises KeyboardInterrupt between steps (nothing is written). The output is verified as the CLI verifies it
+(report['verification']): a failure raises VerificationError unless keep_failed=True. Raises InputError or
+ConvergenceError.)doc");
 }
 
 }  // namespace conformesh::python

@@ -85,9 +85,13 @@ class MeshRemeshPipeline {
                      const MeshRemeshOptions& options)
       : input_(input), positions_(positions), options_(options) {}
 
-  MeshRemeshResult run() const {
+  MeshRemeshResult run() {
     checkInput();
-    return options_.refineIn == RefineMetric::Input ? runInInputMetric() : runUniformized();
+    epsilon_ =
+        options_.epsilonRelative > 0 ? options_.epsilonRelative * std::sqrt(totalArea(input_)) : options_.epsilon;
+    MeshRemeshResult out = options_.refineIn == RefineMetric::Input ? runInInputMetric() : runUniformized();
+    out.epsilon = epsilon_;
+    return out;
   }
 
  private:
@@ -106,10 +110,25 @@ class MeshRemeshPipeline {
                        std::to_string(input_.mesh.nVertices()) + " input vertices");
   }
 
-  // The refinement's options common to both routes: ε, B and the progress report.
+  // The expected size, printed and checked against the cap before refining `t` (graded by `lambda`, empty: uniform).
+  void checkBudget(const IntrinsicTriangulation& t, const std::vector<double>& lambda, MeshRemeshResult& out) const {
+    out.expected = expectedVertices(t, lambda, epsilon_);
+    say("expected output: about " + std::to_string(std::llround(out.expected.expected)) + " vertices (area " +
+        std::to_string(out.expected.area) + " / (1.1 eps^2))");
+    checkVertexBudget(out.expected, epsilon_, options_.maxVertices);
+  }
+
+  // A refinement that inserted nothing returned its input: said, not silent.
+  static void noticeIfUnrefined(const RefineResult& refined, double epsilon, MeshRemeshResult& out) {
+    if (refined.triangulation.mesh.nVertices() > refined.statistics.inputVertices) return;
+    out.notices.push_back(epsilonAboveSpacingNotice(epsilon, measureQuality(refined.triangulation).maxCircumradius));
+  }
+
+  // The refinement's options common to both routes: ε, B, the insertion cap and the progress report.
   RefineOptions refineOptions() const {
     RefineOptions ref = options_.refinement;
-    ref.epsilon = options_.epsilon;
+    ref.epsilon = epsilon_;
+    ref.maxInsertions = insertionCapFor(options_.maxVertices, ref.maxInsertions);
     ref.ratioBound = options_.ratioBound;
     if (!ref.progress && options_.progress)
       ref.progress = [this](const RefineProgress& p) {
@@ -128,6 +147,7 @@ class MeshRemeshPipeline {
     out.inputFaces = input_.mesh.nFaces();
     out.t0Vertices = t0.t0.mesh.nVertices();
     const Uniformization u = uniformizeT0(t0.t0, out);
+    checkFlipLog(u, t0.t0);
     const RefineResult refined = refineUniformized(u, out);
     const auto t = std::chrono::steady_clock::now();
     say("pulling back " + std::to_string(refined.triangulation.mesh.nVertices()) + " vertices and " +
@@ -183,13 +203,30 @@ class MeshRemeshPipeline {
     return u;
   }
 
+  // The pull-back replays the flow's flip log once per bisection round, moving every point that sits in a flipped
+  // face (flow_correspondence.h): its cost grows with the flips per edge. CGAL's data set needs at most
+  // kMaxFlipsPerEdge (docs/robustness.md); lion.off's flow makes 5·10⁶ flips on 2.2·10⁴ edges (a flip cycle of the
+  // flow), where the pull-back ran for hours and past 1.2 GB. Refused with the count, before refining.
+  static constexpr double kMaxFlipsPerEdge = 50;
+  void checkFlipLog(const Uniformization& u, const IntrinsicTriangulation& t0) const {
+    const double flips = static_cast<double>(u.correspondence.flips().size()), edges = t0.mesh.nEdges();
+    if (flips <= kMaxFlipsPerEdge * edges) return;
+    throw ConvergenceError("remesh: the flow made " + std::to_string(u.correspondence.flips().size()) +
+                           " Ptolemy flips on " + std::to_string(t0.mesh.nEdges()) + " edges (" +
+                           std::to_string(std::lround(flips / edges)) + " per edge, cap " +
+                           std::to_string(std::lround(kMaxFlipsPerEdge)) +
+                           "): the pull-back through that flip log would run away; use --refine-in input");
+  }
+
   // T0* refined, graded by e^(−λ) (uniform with options.uniform).
   RefineResult refineUniformized(const Uniformization& u, MeshRemeshResult& out) const {
     const auto t = std::chrono::steady_clock::now();
     RefineOptions ref = refineOptions();
     if (!options_.uniform) ref.lambda = u.lambda;
-    say("refining the uniformized surface, eps = " + std::to_string(options_.epsilon));
+    checkBudget(u.uniform, ref.lambda, out);
+    say("refining the uniformized surface, eps = " + std::to_string(epsilon_));
     RefineResult refined = refineDelaunay(u.uniform, ref);
+    noticeIfUnrefined(refined, epsilon_, out);
     out.refinement = refined.statistics;
     out.uniformQuality = measureQuality(refined.triangulation);
     out.seconds.refine = secondsSince(t);
@@ -210,9 +247,10 @@ class MeshRemeshPipeline {
     out.lambda = refined.lambda;  // λ ≡ 0: the refinement's metric is the input's
     const std::vector<Point> vertexImage = locateOnInput(refined, out);
     out.positions = positionsAt(input_, positions_, out.location);
+    detail::checkAgainstLocations(input_, refined.triangulation, vertexImage, out,
+                                  detail::signpostEdgeInFace(input_, refined));
     out.mesh = std::move(refined.triangulation);
     out.pathLength = out.mesh.edgeLengths;  // each edge is a geodesic of the input: its own path
-    detail::checkAgainstLocations(input_, out.mesh, vertexImage, out);
     out.quality = measureQuality(out.mesh);
     out.uniformQuality = out.quality;
     out.seconds.pullBack = secondsSince(t);
@@ -226,8 +264,10 @@ class MeshRemeshPipeline {
     // The input's boundary is a polygon of straight input edges: split it where it lies, never on a fitted circle
     // (which would put vertices off the input's faces).
     ref.boundarySplit = BoundarySplit::Geodesic;
-    say("refining the input in its own metric, eps = " + std::to_string(options_.epsilon));
+    checkBudget(input_, {}, out);
+    say("refining the input in its own metric, eps = " + std::to_string(epsilon_));
     RefineResult refined = refineDelaunay(input_, ref);
+    noticeIfUnrefined(refined, epsilon_, out);
     out.refinement = refined.statistics;
     out.seconds.refine = secondsSince(t);
     return refined;
@@ -251,6 +291,7 @@ class MeshRemeshPipeline {
   const IntrinsicTriangulation& input_;
   const std::vector<Eigen::Vector3d>& positions_;
   const MeshRemeshOptions& options_;
+  double epsilon_ = 0;  // options.epsilon, or epsilonRelative · √(input area)
 };
 
 }  // namespace
@@ -266,7 +307,11 @@ RefineMetric parseRefineMetric(const std::string& name) {
 }
 
 std::string MeshRemeshOptions::validate() const {
-  if (!(epsilon > 0) || !std::isfinite(epsilon))
+  if (epsilonRelative != 0 || !std::isfinite(epsilonRelative)) {
+    if (!(epsilonRelative > 0) || !std::isfinite(epsilonRelative))
+      return "remesh: --eps-rel must be a positive fraction of sqrt(area), found " + std::to_string(epsilonRelative);
+    if (epsilon != 0) return "remesh: give --eps or --eps-rel, not both";
+  } else if (!(epsilon > 0) || !std::isfinite(epsilon))
     return "remesh: --eps must be a positive size in the input mesh's units, found " + std::to_string(epsilon);
   if (inputSubdivisions < 0 || inputSubdivisions > 6)
     return "remesh: input subdivisions must be 0..6, found " + std::to_string(inputSubdivisions);
@@ -302,7 +347,8 @@ MeshInput meshInputFromData(const MeshData& data) {
 
 MeshRemeshResult remeshMesh(const IntrinsicTriangulation& input, const std::vector<Eigen::Vector3d>& inputPositions,
                             const MeshRemeshOptions& options) {
-  return MeshRemeshPipeline(input, inputPositions, options).run();
+  MeshRemeshPipeline pipeline(input, inputPositions, options);
+  return pipeline.run();
 }
 
 // === the curvature-measure check

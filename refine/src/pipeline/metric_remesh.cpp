@@ -132,6 +132,12 @@ UniformizedMetric uniformizeMetric(const SmoothMetric& metric, const RemeshOptio
 }
 
 std::string RemeshOptions::validate() const {
+  if (epsilonRelative != 0 || !std::isfinite(epsilonRelative)) {
+    if (!(epsilonRelative > 0) || !std::isfinite(epsilonRelative))
+      return "remesh: --eps-rel must be a positive fraction of sqrt(area), found " + std::to_string(epsilonRelative);
+    if (epsilon != 0) return "remesh: give --eps or --eps-rel, not both";
+    return "";
+  }
   if (!(epsilon > 0) || !std::isfinite(epsilon))
     return "remesh: --eps must be a positive size in the metric's units, found " + std::to_string(epsilon);
   return "";
@@ -182,7 +188,13 @@ class UniformizedRemesh {
     RefineOptions ref = options_.refinement;
     ref.epsilon = options_.epsilon;
     ref.ratioBound = options_.ratioBound;
+    ref.maxInsertions = insertionCapFor(options_.maxVertices, ref.maxInsertions);
     if (!options_.uniform) ref.lambda = prepared_.uniformization.lambda;
+    out_.epsilon = options_.epsilon;
+    out_.expected = expectedVertices(prepared_.uniformization.uniform, ref.lambda, options_.epsilon);
+    say("expected output: about " + std::to_string(std::llround(out_.expected.expected)) + " vertices (area " +
+        std::to_string(out_.expected.area) + " / (1.1 eps^2))");
+    checkVertexBudget(out_.expected, options_.epsilon, options_.maxVertices);
     // The kept-boundary domain is the polygon of T0's boundary chords: split its sides on the chords.
     if (keepBoundary_) ref.boundarySplit = BoundarySplit::Geodesic;
     if (!ref.progress && options_.progress)
@@ -192,6 +204,10 @@ class UniformizedRemesh {
       };
     say("refining the uniformized surface, eps = " + std::to_string(options_.epsilon));
     RefineResult refined = refineDelaunay(prepared_.uniformization.uniform, ref);
+    if (refined.triangulation.mesh.nVertices() == refined.statistics.inputVertices)  // nothing inserted: said
+      out_.notices.push_back(
+          epsilonAboveSpacingNotice(options_.epsilon, measureQuality(refined.triangulation).maxCircumradius) +
+          " (T0, circumradii in the uniformized metric)");
     out_.refinement = refined.statistics;
     out_.uniformQuality = measureQuality(refined.triangulation);
     out_.seconds.refine = secondsSince(t);
@@ -350,9 +366,20 @@ void throwIfInvalid(const RemeshOptions& options) {
 
 }  // namespace
 
+// --eps-rel becomes ε = fraction · √(smooth area), and an ε far too small is refused before T0 is even discretized
+// (the smooth area / (1.1 ε²) is the same estimate as vertex_budget.h's, without λ).
 RemeshResult remeshMetric(const SmoothMetric& metric, const RemeshOptions& options) {
   throwIfInvalid(options);
-  return remeshUniformized(uniformizeMetric(metric, options), metric, options);
+  RemeshOptions o = options;
+  QuadratureOptions q;
+  q.absoluteTolerance = q.relativeTolerance = 1e-6;
+  const double area = metricArea(metric, q).value;
+  if (o.epsilonRelative > 0) {
+    o.epsilon = o.epsilonRelative * std::sqrt(area);
+    o.epsilonRelative = 0;
+  }
+  checkVertexBudget({area, area / (1.1 * o.epsilon * o.epsilon)}, o.epsilon, o.maxVertices);
+  return remeshUniformized(uniformizeMetric(metric, o), metric, o);
 }
 
 RemeshResult remeshUniformized(const UniformizedMetric& prepared, const SmoothMetric& metric,

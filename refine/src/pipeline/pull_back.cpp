@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <Eigen/LU>
@@ -233,13 +234,47 @@ std::vector<double> ImagePathPullBack::developLengths(MeshRemeshResult& out) {
   return lengths;
 }
 
+EdgeInFace signpostEdgeInFace(const IntrinsicTriangulation& input, const RefineResult& refined) {
+  constexpr double kTolerance = 1e-9;  // rad: see pull_back.h
+  const int n0 = input.mesh.nVertices();
+  auto frame = std::make_shared<Signposts>(initialSignposts(input));
+  return [&input, &refined, frame, n0](int e, int f) {
+    const HalfedgeMesh& m1 = refined.triangulation.mesh;
+    const int h = m1.edgeHalfedge(e);
+    for (int g : {h, m1.twin(h)}) {
+      if (g == kInvalid || m1.tail(g) >= n0) continue;
+      const int v = m1.tail(g);
+      bool inWedge = false;
+      for (int k = 0; k < 3 && !inWedge; ++k) {
+        const int c = 3 * f + k;
+        if (input.mesh.tail(c) != v) continue;
+        const double d = frame->reduce(v, refined.signposts.angle[g] - frame->angle[c]);
+        inWedge = d <= cornerAngle(input, c) + kTolerance || d >= frame->period[v] - kTolerance;
+      }
+      if (!inWedge) return false;
+    }
+    return true;
+  };
+}
+
+namespace {
+
+bool triangleInFace(const HalfedgeMesh& m1, int f, int face, const EdgeInFace& inFace) {
+  if (!inFace) return true;
+  for (int k = 0; k < 3; ++k)
+    if (!inFace(m1.edge(3 * f + k), face)) return false;
+  return true;
+}
+
+}  // namespace
+
 // Orientation of the output triangles on T0 where the three vertices can be written in one input face (directly, or
 // a vertex or a point on a side re-expressed in a neighbouring face), and the same-face length check: an edge whose
 // ends can be written in one face is compared with the straight distance of the ends there. A loop edge (both ends one
 // vertex: a geodesic loop around a cone vertex of angle below π, which an intrinsic Delaunay triangulation may hold)
 // and its triangles have no such picture in one face; they are counted, not checked.
 void checkAgainstLocations(const IntrinsicTriangulation& t0, const IntrinsicTriangulation& t1,
-                           const std::vector<Point>& vertexImage, MeshRemeshResult& out) {
+                           const std::vector<Point>& vertexImage, MeshRemeshResult& out, const EdgeInFace& inFace) {
   const HalfedgeMesh &m0 = t0.mesh, &m1 = t1.mesh;
   for (int f = 0; f < m1.nFaces(); ++f) {
     const int v0 = m1.faceVertex(f, 0), v1 = m1.faceVertex(f, 1), v2 = m1.faceVertex(f, 2);
@@ -250,10 +285,11 @@ void checkAgainstLocations(const IntrinsicTriangulation& t0, const IntrinsicTria
       Eigen::Vector3d b[3];
       if (!expressIn(m0, *p[0], face, b[0]) || !expressIn(m0, *p[1], face, b[1]) || !expressIn(m0, *p[2], face, b[2]))
         continue;
+      if (!triangleInFace(m1, f, face, inFace)) continue;
       Eigen::Matrix3d B;
       B << b[0], b[1], b[2];
       ++out.orientationChecked;
-      if (!(B.determinant() > 0)) ++out.invertedTriangles;
+      if (!(B.determinant() > 0) && out.invertedTriangles++ == 0) out.firstInvertedTriangle = {f, face};
       break;
     }
   }
@@ -266,15 +302,25 @@ void checkAgainstLocations(const IntrinsicTriangulation& t0, const IntrinsicTria
     const Point &a = vertexImage[m1.tail(h)], &b = vertexImage[m1.tip(h)];
     Eigen::Vector3d x;
     double d;
-    if (expressIn(m0, a, b.face, x))
+    int face;
+    if (expressIn(m0, a, b.face, x) && (!inFace || inFace(e, b.face))) {
       d = flatDistance(t0, b.face, x, b.bary);
-    else if (expressIn(m0, b, a.face, x))
+      face = b.face;
+    } else if (expressIn(m0, b, a.face, x) && (!inFace || inFace(e, a.face))) {
       d = flatDistance(t0, a.face, a.bary, x);
-    else
+      face = a.face;
+    } else {
       continue;
+    }
     ++out.sameFaceEdges;
-    out.maxSameFaceLengthError =
-        std::max(out.maxSameFaceLengthError, std::abs(t1.edgeLengths[e] - d) / t1.edgeLengths[e]);
+    const double error = std::abs(t1.edgeLengths[e] - d) / t1.edgeLengths[e];
+    out.maxSameFaceLengthError = std::max(out.maxSameFaceLengthError, error);
+    const double side = std::max({t0.length(3 * face), t0.length(3 * face + 1), t0.length(3 * face + 2)});
+    const double scaled = std::abs(t1.edgeLengths[e] - d) / std::max(t1.edgeLengths[e], side);
+    if (scaled > out.maxSameFaceScaledError) {
+      out.maxSameFaceScaledError = scaled;
+      out.worstSameFaceEdge = {e, face};
+    }
   }
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -75,9 +76,22 @@ class ImagePathPullBack {
   std::vector<double> pathLength_;
 };
 
+// Whether output edge `edge` may be pictured as the straight segment of its located ends inside T0 face `face`. Two
+// corners of one input face need not be joined by that face's side: an intrinsic Delaunay edge between them may be
+// another geodesic, around a cone vertex of angle below π (femur.off: vertex 1470, 128°). Empty: every edge may.
+using EdgeInFace = std::function<bool(int edge, int face)>;
+
+// The input route's EdgeInFace: an output edge with an end at input vertex v lies in face f only when its signpost
+// direction at v (refined.signposts, in the frame of initialSignposts(input)) lies in f's corner wedge at v, to
+// 1e-9 rad (flips re-derive signposts with ~1e-15 rad round-off; the wedges of distinct sides differ by corner angles,
+// above 1e-6 rad on any mesh the reader accepts).
+EdgeInFace signpostEdgeInFace(const intrinsic::IntrinsicTriangulation& input, const RefineResult& refined);
+
 // Orientation of the output triangles on T0 and the same-face length check (MeshRemeshResult: invertedTriangles,
-// orientationChecked, sameFaceEdges, maxSameFaceLengthError, loopEdges), from the output vertices' points on T0.
+// orientationChecked, sameFaceEdges, maxSameFaceLengthError, loopEdges and the first offending elements), from the
+// output vertices' points on T0. A triangle is checked in a face only when its three edges may lie in it (inFace).
 void checkAgainstLocations(const intrinsic::IntrinsicTriangulation& t0, const intrinsic::IntrinsicTriangulation& t1,
-                           const std::vector<Point>& vertexImage, MeshRemeshResult& out);
+                           const std::vector<Point>& vertexImage, MeshRemeshResult& out,
+                           const EdgeInFace& inFace = {});
 
 }  // namespace conformesh::refine::detail

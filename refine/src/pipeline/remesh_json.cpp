@@ -54,6 +54,13 @@ nlohmann::json refineStatisticsJson(const RefineStatistics& s) {
           {"trace_steps", s.traceSteps}};
 }
 
+nlohmann::json verificationJson(const OutputVerification& check) {
+  return {{"passed", check.passed()},
+          {"failures", check.failures},
+          {"faces_checked", check.facesChecked},
+          {"area_relative_error", check.areaRelativeError}};
+}
+
 nlohmann::json curvatureMeasureJson(const intrinsic::CurvatureMeasureResult& c,
                                     const intrinsic::CurvatureMeasureOptions& o) {
   return {{"region", o.region == intrinsic::MeasureRegion::GeodesicBall ? "geodesic-ball" : "triangle-union"},
@@ -125,7 +132,9 @@ nlohmann::json uniformizedJson(const intrinsic::Uniformization& u) {
 nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMetric& metric,
                                 const RemeshOptions& o) {
   return {{"metric", metric.description()},
-          {"eps", o.epsilon},
+          {"eps", r.epsilon},
+          {"expected_vertices", r.expected.expected},
+          {"notices", r.notices},
           {"ratio_bound", o.ratioBound},
           {"smoothing_passes", o.refinement.smoothingPasses},
           {"segment_rule", segmentRuleName(o.refinement.segmentRule)},
@@ -148,7 +157,9 @@ nlohmann::json meshRemeshJson(const MeshRemeshResult& r, const intrinsic::Intrin
                               const std::string& source, const MeshRemeshOptions& o) {
   nlohmann::json j = {
       {"input", source},
-      {"eps", o.epsilon},
+      {"eps", r.epsilon},
+      {"expected_vertices", r.expected.expected},
+      {"notices", r.notices},
       {"ratio_bound", o.ratioBound},
       {"refine_in", toString(r.refinedIn)},
       {"smoothing_passes", o.refinement.smoothingPasses},
@@ -161,6 +172,7 @@ nlohmann::json meshRemeshJson(const MeshRemeshResult& r, const intrinsic::Intrin
       {"orientation_checked_triangles", r.orientationChecked},
       {"same_face_edges", r.sameFaceEdges},
       {"max_same_face_length_error", r.maxSameFaceLengthError},
+      {"max_same_face_scaled_error", r.maxSameFaceScaledError},
       {"loop_edges", r.loopEdges},
       {"total_area", intrinsic::totalArea(r.mesh)},
       {"seconds",

@@ -7,6 +7,7 @@
 // Derivations (image paths, development, why two routes): docs/refinement.md §9; the command: docs/cli.md.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
+#include "conformesh/refine/pipeline/vertex_budget.h"
 
 namespace conformesh::refine {
 
@@ -49,6 +51,11 @@ struct MeshRemeshOptions {
   // Halvings of every straight piece before measuring its image: the lengths must not change (to round-off); a check
   // of the exact edge crossings, for tests. 0 = only where needed.
   int extraBisections = 0;
+  // ε as a fraction of √area instead (--eps-rel; area of the input): used when > 0, and then epsilon must be 0.
+  double epsilonRelative = 0;
+  // Refuse, before refining, an ε whose expected vertex count (vertex_budget.h) exceeds this; the refinement's
+  // insertion cap is lowered to twice it. ≤ 0: no cap.
+  std::int64_t maxVertices = kDefaultMaxVertices;
   std::function<void(const std::string&)> progress;
 
   // What is wrong with these options ("" when valid): ε, the subdivision count, and the settings the input route
@@ -79,6 +86,13 @@ struct MeshRemeshResult {
   // edge's length and the straight distance of its located ends there.
   int sameFaceEdges = 0;
   double maxSameFaceLengthError = 0;
+  // The same difference relative to max(edge length, the face's longest side): the located ends' round-off scales
+  // with the face (barycentric coordinates), so an edge far shorter than its face has a larger relative error.
+  double maxSameFaceScaledError = 0;
+  // The first inverted output triangle and the edge of the largest scaled same-face error, each with the T0 face it was
+  // checked in ({−1, −1}: none). T0 is the input after subdivision (input route: the input itself).
+  std::array<int, 2> firstInvertedTriangle{-1, -1};
+  std::array<int, 2> worstSameFaceEdge{-1, -1};
   // Output edges from a vertex to itself (geodesic loops around a cone vertex of angle below π); they and their
   // triangles enter neither check above.
   int loopEdges = 0;
@@ -95,6 +109,9 @@ struct MeshRemeshResult {
   QualityReport uniformQuality;  // of T1* in its background metric (input route: the same as quality)
   QualityReport quality;         // of T1 in the input metric
   MeshRemeshTimes seconds;
+  double epsilon = 0;                // the ε used (options.epsilon, or epsilonRelative · √(input area))
+  VertexEstimate expected;           // before refining (vertex_budget.h)
+  std::vector<std::string> notices;  // e.g. ε above the input's spacing (nothing inserted)
 };
 
 // Remeshes `input` (Euclidean background; one connected component). `positions`, per input vertex, may be empty;

@@ -19,6 +19,7 @@
 #include "conformesh/intrinsic/metric/smooth_metric.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
+#include "conformesh/refine/pipeline/vertex_budget.h"
 
 namespace conformesh::refine {
 
@@ -48,6 +49,11 @@ struct RemeshOptions {
   // Passed through to the refinement (epsilon, ratioBound and lambda are set from the fields above); unsmoothed by
   // default, the paper's refinement.
   RefineOptions refinement;
+  // ε as a fraction of √area instead (--eps-rel; area of the T0): used when > 0, and then epsilon must be 0.
+  double epsilonRelative = 0;
+  // Refuse, before refining, an ε whose expected vertex count (vertex_budget.h) exceeds this; the refinement's
+  // insertion cap is lowered to twice it. ≤ 0: no cap.
+  std::int64_t maxVertices = kDefaultMaxVertices;
   std::function<void(const std::string&)> progress;
 
   // What is wrong with these options ("" when valid): ε must be positive and finite.
@@ -70,6 +76,9 @@ struct RemeshResult {
   std::vector<Eigen::Vector3d> t0Bary;     // and its barycentric coordinates there
   int t0Vertices = 0, t0Faces = 0;
   int invertedTriangles = 0;  // output triangles whose image in the chart's reference surface is inverted (should be 0)
+  double epsilon = 0;         // the ε used (options.epsilon, or epsilonRelative · √(T0's area))
+  VertexEstimate expected;    // before refining (vertex_budget.h)
+  std::vector<std::string> notices;  // e.g. ε above T0's spacing (nothing inserted)
   intrinsic::UniformizationReport uniformization;
   DiskTarget diskTarget = DiskTarget::Circle;  // as in UniformizedMetric
   RefineStatistics refinement;

@@ -13,6 +13,7 @@
 #include "conformesh/refine/delaunay/refinement_quality.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
+#include "conformesh/refine/pipeline/output_verification.h"
 
 namespace conformesh::refine {
 
@@ -20,6 +21,10 @@ nlohmann::json qualityJson(const QualityReport& q);
 nlohmann::json uniformizationJson(const intrinsic::UniformizationReport& u);
 nlohmann::json refineStatisticsJson(const RefineStatistics& s);
 // Summary figures and the histogram; per-vertex values are left to the output files.
+// An output's verification (output_verification.h): passed, failures, faces_checked, area_relative_error. The
+// command adds the name it wrote ("written").
+nlohmann::json verificationJson(const OutputVerification& check);
+
 nlohmann::json curvatureMeasureJson(const intrinsic::CurvatureMeasureResult& c,
                                     const intrinsic::CurvatureMeasureOptions& o);
 

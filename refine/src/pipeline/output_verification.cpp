@@ -1,0 +1,125 @@
+// output_verification.cpp — the checks of output_verification.h.
+#include "conformesh/refine/pipeline/output_verification.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "conformesh/intrinsic/mesh/triangle_geometry.h"
+
+namespace conformesh::refine {
+
+using namespace conformesh::intrinsic;
+
+namespace {
+
+std::string describeFace(const HalfedgeMesh& m, int f) {
+  return "face " + std::to_string(f) + " (vertices " + std::to_string(m.faceVertex(f, 0)) + ", " +
+         std::to_string(m.faceVertex(f, 1)) + ", " + std::to_string(m.faceVertex(f, 2)) + ")";
+}
+
+// Every face's lengths against the strict triangle inequality of the background; the first bad face is named.
+void checkTriangles(const IntrinsicTriangulation& t, OutputVerification& v) {
+  const HalfedgeMesh& m = t.mesh;
+  int bad = 0, first = -1;
+  for (int f = 0; f < m.nFaces(); ++f) {
+    const double a = t.length(3 * f), b = t.length(3 * f + 1), c = t.length(3 * f + 2);
+    const bool ok = std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && a > 0 && b > 0 && c > 0 &&
+                    isValidTriangle(t.background, a, b, c);
+    if (!ok && bad++ == 0) first = f;
+  }
+  v.facesChecked = m.nFaces();
+  if (bad == 0) return;
+  std::ostringstream s;
+  s.precision(17);
+  s << bad << " output faces violate the " << toString(t.background) << " triangle inequality, first "
+    << describeFace(m, first) << " with lengths " << t.length(3 * first) << ", " << t.length(3 * first + 1) << ", "
+    << t.length(3 * first + 2);
+  v.failures.push_back(s.str());
+}
+
+void checkArea(double output, double input, double tolerance, OutputVerification& v) {
+  v.areaRelativeError = (output - input) / input;
+  if (std::abs(v.areaRelativeError) <= tolerance) return;
+  std::ostringstream s;
+  s.precision(12);
+  s << "output area " << output << " differs from the input's " << input << " by " << v.areaRelativeError
+    << " relative (tolerance " << tolerance << ": the output retriangulates the input)";
+  v.failures.push_back(s.str());
+}
+
+}  // namespace
+
+std::string OutputVerification::message() const {
+  std::string s = "output failed verification: ";
+  for (std::size_t i = 0; i < failures.size(); ++i) s += (i ? "; " : "") + failures[i];
+  return s;
+}
+
+OutputVerification verifyMeshRemesh(const MeshRemeshResult& r, const IntrinsicTriangulation& input,
+                                    const VerificationTolerances& tol) {
+  OutputVerification v;
+  checkTriangles(r.mesh, v);
+  if (r.invertedTriangles > 0) {
+    const auto [f, face] = r.firstInvertedTriangle;
+    v.failures.push_back(std::to_string(r.invertedTriangles) + " of " + std::to_string(r.orientationChecked) +
+                         " checked output triangles are inverted on the input, first " +
+                         (f >= 0 ? describeFace(r.mesh.mesh, f) + " in input-side face " + std::to_string(face)
+                                 : std::string("(not recorded)")));
+  }
+  if (!(r.maxSameFaceScaledError <= tol.sameFaceLength)) {
+    const auto [e, face] = r.worstSameFaceEdge;
+    std::ostringstream s;
+    s.precision(3);
+    s << "output edge " << e << " differs from the straight distance of its located ends in face " << face << " by "
+      << r.maxSameFaceScaledError << " relative to max(edge, the face's longest side) (tolerance " << tol.sameFaceLength
+      << ")";
+    v.failures.push_back(s.str());
+  }
+  checkArea(totalArea(r.mesh), totalArea(input), tol.area, v);
+  return v;
+}
+
+OutputVerification verifyMetricRemesh(const RemeshResult& r, const VerificationTolerances&) {
+  OutputVerification v;
+  checkTriangles(r.mesh, v);
+  if (r.invertedTriangles > 0)
+    v.failures.push_back(std::to_string(r.invertedTriangles) +
+                         " output triangles are inverted in the map back to the chart's reference surface");
+  return v;
+}
+
+OutputVerification verifyRefinement(const IntrinsicTriangulation& input, const RefineResult& r,
+                                    const VerificationTolerances& tol) {
+  OutputVerification v;
+  checkTriangles(r.triangulation, v);
+  const int nf = input.mesh.nFaces();
+  for (std::size_t i = 0; i < r.locations.size(); ++i) {
+    const InputLocation& l = r.locations[i];
+    if (l.face >= 0 && l.face < nf && l.bary.allFinite()) continue;
+    v.failures.push_back("output vertex " + std::to_string(i) + " is not located on a face of the input (face " +
+                         std::to_string(l.face) + " of " + std::to_string(nf) + ")");
+    break;
+  }
+  // Boundary loops split on their circle grow the domain from the chords towards the circle: no equality there.
+  if (r.statistics.circleLoops == 0) checkArea(totalArea(r.triangulation), totalArea(input), tol.area, v);
+  return v;
+}
+
+OutputVerification verifyUniformization(const Uniformization& u) {
+  OutputVerification v;
+  checkTriangles(u.uniform, v);
+  for (std::size_t i = 0; i < u.lambda.size(); ++i)
+    if (!std::isfinite(u.lambda[i])) {
+      v.failures.push_back("lambda of vertex " + std::to_string(i) + " is not finite");
+      break;
+    }
+  return v;
+}
+
+std::string failedOutputName(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/'), dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path + ".failed";
+  return path.substr(0, dot) + ".failed" + path.substr(dot);
+}
+
+}  // namespace conformesh::refine
