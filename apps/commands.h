@@ -15,5 +15,7 @@ void registerUniformizeCommand(CLI::App& app);
 void registerRefineCommand(CLI::App& app);
 void registerLayoutCommand(CLI::App& app);
 void registerEmbedCommand(CLI::App& app);
+void registerFieldCommand(CLI::App& app);
+void registerRepairCommand(CLI::App& app);
 
 }  // namespace conformesh::apps

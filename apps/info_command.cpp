@@ -56,6 +56,8 @@ nlohmann::json toJson(const intrinsic::MeshSummary& s, const intrinsic::Conversi
           {"non_delaunay_fraction", s.nonDelaunayFraction},
           {"reoriented_faces", conv.build.reorientedFaces},
           {"unreferenced_vertices_removed", conv.unreferencedVerticesRemoved},
+          {"polygons_fan_triangulated", conv.polygonsTriangulated},
+          {"tristrip_triangles", conv.stripTriangles},
           {"lengths_from", conv.lengthsFromPositions ? "positions" : "edge element"}};
 }
 
@@ -86,6 +88,8 @@ void printText(const std::string& path, const intrinsic::MeshSummary& s, const i
   line("non-Delaunay edges",
        std::to_string(s.nonDelaunayEdges) + " (" + num(100 * s.nonDelaunayFraction) + " % of interior edges)");
   if (conv.build.reorientedFaces > 0) line("reoriented faces", std::to_string(conv.build.reorientedFaces));
+  if (conv.polygonsTriangulated > 0) line("polygons fan-triangulated", std::to_string(conv.polygonsTriangulated));
+  if (conv.stripTriangles > 0) line("triangles from tristrips", std::to_string(conv.stripTriangles));
   if (conv.unreferencedVerticesRemoved > 0)
     line("unreferenced vertices", std::to_string(conv.unreferencedVerticesRemoved) + " (ignored)");
 }
@@ -121,6 +125,7 @@ void registerInfoCommand(CLI::App& app) {
       "info", "Report a mesh's topology, curvature, Gauss-Bonnet residual, angles and Delaunay-ness");
   sub->footer("Example: conformesh info bunny.ply --json\nDetails: docs/cli.md#info");
   sub->add_option("file", o->input, "Mesh file (.obj, .off, .ply)")->required();
+  addRepairOption(sub);
   sub->add_flag("--json", o->json, "Print the report as JSON");
   sub->add_option("--delaunay", o->delaunayOutput, "Also write the intrinsic Delaunay triangulation here (PLY)");
   sub->callback([o] { runInfo(*o); });

@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
   conformesh::apps::registerRefineCommand(app);
   conformesh::apps::registerLayoutCommand(app);
   conformesh::apps::registerEmbedCommand(app);
+  conformesh::apps::registerFieldCommand(app);
+  conformesh::apps::registerRepairCommand(app);
 
   try {
     app.parse(argc, argv);
