@@ -68,8 +68,8 @@ class MeshRepairer {
     ++s.count;
   }
 
-  // Grid hashing with cells of the merge distance: every pair closer than it lies in neighbouring cells. Vertices are
-  // taken in index order and each joins the first earlier representative within the distance.
+  // Grid hashing with cells of the merge distance: every pair closer than it lies in neighbouring cells. Boundary
+  // vertices are taken in index order and each joins the lowest earlier representative within the distance.
   void mergeVertices() {
     Eigen::Vector3d lo = in_.positions[0], hi = lo;
     for (const auto& p : in_.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
@@ -86,10 +86,12 @@ class MeshRepairer {
     };
     std::unordered_multimap<std::uint64_t, int> grid;
     std::vector<int> rep(in_.nVertices);
+    const std::vector<char> onBoundary = boundaryVertices();
     for (int v = 0; v < in_.nVertices; ++v) {
+      rep[v] = v;
+      if (!onBoundary[v]) continue;
       const Eigen::Vector3d& p = in_.positions[v];
       const long long cx = cellOf(p, 0), cy = cellOf(p, 1), cz = cellOf(p, 2);
-      rep[v] = v;
       for (long long dx = -1; dx <= 1 && rep[v] == v; ++dx)
         for (long long dy = -1; dy <= 1 && rep[v] == v; ++dy)
           for (long long dz = -1; dz <= 1 && rep[v] == v; ++dz) {
@@ -107,6 +109,20 @@ class MeshRepairer {
     }
     for (auto& f : faces_)
       for (int& v : f) v = rep[v];
+  }
+
+  // Vertices on an edge that only one face of the input uses: the only ones merged (stitching borders, as CGAL's
+  // stitch_borders does). Coincident vertices inside a surface are left apart: merging them would pinch it.
+  std::vector<char> boundaryVertices() const {
+    std::unordered_map<std::uint64_t, int> uses;
+    uses.reserve(2 * faces_.size());
+    for (const auto& f : faces_)
+      for (int k = 0; k < 3; ++k) ++uses[pairKey(f[k], f[(k + 1) % 3])];
+    std::vector<char> on(in_.nVertices, 0);
+    for (const auto& f : faces_)
+      for (int k = 0; k < 3; ++k)
+        if (uses[pairKey(f[k], f[(k + 1) % 3])] == 1) on[f[k]] = on[f[(k + 1) % 3]] = 1;
+    return on;
   }
 
   bool degenerate(const std::array<int, 3>& v) const {
@@ -146,7 +162,14 @@ class MeshRepairer {
     };
     std::unordered_map<std::array<int, 3>, int, TripleHash> seen;
     seen.reserve(2 * faces_.size());
+    std::unordered_map<std::uint64_t, int> uses;
+    for (const auto& f : faces_)
+      for (int k = 0; k < 3; ++k) ++uses[pairKey(f[k], f[(k + 1) % 3])];
     keepFaces([&](size_t f) {
+      // A face and its copy alone on their edges close up (the doubled triangle, a valid surface): kept.
+      bool crowded = false;
+      for (int k = 0; k < 3; ++k) crowded = crowded || uses[pairKey(faces_[f][k], faces_[f][(k + 1) % 3])] > 2;
+      if (!crowded) return true;
       std::array<int, 3> k = faces_[f];
       std::sort(k.begin(), k.end());
       const auto [it, isNew] = seen.emplace(k, faceOrigin_[f]);
@@ -215,8 +238,11 @@ class MeshRepairer {
     const int nC = static_cast<int>(3 * faces_.size());
     Fans fans(nC);
     for (auto& [key, hs] : edgeGroups()) {
-      if (hs.size() != 2 || cut_.count(hs[0]) || cut_.count(hs[1])) continue;
-      const int h = hs[0], g = hs[1];
+      int glued[2], n = 0;
+      for (int h : hs)
+        if (!cut_.count(h) && n < 3) glued[std::min(n++, 1)] = h;
+      if (n != 2) continue;
+      const int h = glued[0], g = glued[1];
       const int hTail = h, hTip = 3 * (h / 3) + (h % 3 + 1) % 3;
       const int gTail = g, gTip = 3 * (g / 3) + (g % 3 + 1) % 3;
       const int a = faces_[h / 3][h % 3];
@@ -264,12 +290,13 @@ class MeshRepairer {
 // component's majority), read back from the built mesh.
 MeshData MeshRepairer::compactAndOrient() {
   if (faces_.empty()) throw InputError(describeAt(in_.source, "repair removed every face (all were degenerate)"));
-  std::vector<int> index(origin_.size(), -1), vertexOf;
+  std::vector<int> index(origin_.size(), -1), vertexOf;  // kept in the input's order, copies after
+  for (const auto& f : faces_)
+    for (int v : f) index[v] = 0;
+  for (size_t v = 0; v < index.size(); ++v)
+    if (index[v] == 0) index[v] = static_cast<int>(vertexOf.size()), vertexOf.push_back(static_cast<int>(v));
   for (auto& f : faces_)
-    for (int& v : f) {
-      if (index[v] < 0) index[v] = static_cast<int>(vertexOf.size()), vertexOf.push_back(v);
-      v = index[v];
-    }
+    for (int& v : f) v = index[v];
   std::vector<char> usedInInput(in_.nVertices, 0);
   for (const auto& f : in_.faces)
     for (int v : f) usedInInput[v] = 1;
@@ -378,6 +405,7 @@ void requireNoRepairNeeded(const MeshData& data) {
   if (!data.cornerEdges.empty()) return;
   RepairOptions o;
   o.mergeTolerance = -1;
+  o.degenerateTolerance = 0;  // exactly toTriangulation's criterion: the strict triangle inequality
   o.examples = 1;
   RepairReport r;
   repairMesh(data, o, &r);

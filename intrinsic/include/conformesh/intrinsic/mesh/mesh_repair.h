@@ -1,5 +1,5 @@
 // mesh_repair.h — turning what is almost a surface into one, on MeshData (a file's content) before toTriangulation:
-// merge duplicate vertices, drop degenerate and duplicate faces, cut non-manifold edges into boundary, duplicate
+// merge duplicate boundary vertices, drop degenerate faces and duplicate faces that crowd an edge, cut non-manifold edges into boundary, duplicate
 // pinched vertices into one vertex per fan, orient consistently. Each step is counted and its first elements named in
 // a RepairReport. Positions and per-vertex properties follow the vertices (a duplicated vertex copies them; a merged
 // one keeps the lowest index's); per-edge lengths follow their vertex pairs. docs/cli.md#repair documents the steps.
@@ -14,8 +14,9 @@
 namespace conformesh::intrinsic {
 
 struct RepairOptions {
-  // Vertices closer than mergeTolerance × (bounding-box diagonal) are merged (positions needed; 0: exact duplicates
-  // only; negative: no merging). The default merges what a file's rounding made distinct, not features.
+  // Boundary vertices (on an edge of one face) closer than mergeTolerance × (bounding-box diagonal) are merged
+  // (positions needed; 0: exact duplicates only; negative: no merging): borders are stitched, while coincident vertices
+  // inside a surface stay apart. The default merges what a file's rounding made distinct, not features.
   double mergeTolerance = 1e-10;
   // A face is degenerate when it repeats a vertex or, with positions, when its area is at most
   // degenerateTolerance × (its longest side)²: its height over the longest side is below 2·tolerance of that side.
