@@ -408,16 +408,20 @@ void requireNoRepairNeeded(const MeshData& data) {
   o.degenerateTolerance = 0;  // exactly toTriangulation's criterion: the strict triangle inequality
   o.examples = 1;
   RepairReport r;
-  repairMesh(data, o, &r);
+  try {
+    repairMesh(data, o, &r);
+  } catch (const InputError&) {
+    return;  // repair would not help (every face degenerate, a non-orientable component): toTriangulation says why
+  }
   if (!r.neededForTriangulation()) return;
-  const RepairReport::Step* steps[] = {&r.degenerateFaces, &r.duplicateFaces, &r.nonManifoldEdges,
-                                       &r.pinchedVertices};
-  const char* what[] = {"degenerate faces", "duplicate faces", "non-manifold edges",
-                        "pinched vertices (extra vertex fans)"};
+  const std::pair<const RepairReport::Step*, const char*> steps[] = {{&r.degenerateFaces, "degenerate "},
+                                                                      {&r.duplicateFaces, "duplicate "},
+                                                                      {&r.nonManifoldEdges, "non-manifold "},
+                                                                      {&r.pinchedVertices, "pinched "}};
   std::string first;
-  for (int i = 0; i < 4 && first.empty(); ++i)
-    if (steps[i]->count > 0)
-      first = std::string(what[i]) + ": " + std::to_string(steps[i]->count) + ", the first " + steps[i]->examples[0];
+  for (const auto& [step, adjective] : steps)
+    if (first.empty() && step->count > 0)
+      first = adjective + step->examples[0] + (step->count > 1 ? " (" + std::to_string(step->count) + " in all)" : "");
   throw InputError(describeAt(data.source, "not a manifold triangle mesh: " + first +
                                                "; `--repair` would fix it (docs/cli.md#repair)"));
 }
