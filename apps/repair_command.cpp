@@ -84,7 +84,7 @@ void registerRepairCommand(CLI::App& app) {
   sub->add_option("--merge-tolerance", o->repair.mergeTolerance,
                   "Merge vertices closer than this times the bounding-box diagonal (< 0: none)")
       ->capture_default_str();
-  sub->add_option("--degenerate-tolerance", o->repair.degenerateTolerance,
+  sub->add_option("--area-tolerance", o->repair.degenerateTolerance,
                   "Drop faces with area <= this times their longest side squared")
       ->capture_default_str();
   sub->add_flag("--json", o->json, "Print the report as JSON");
