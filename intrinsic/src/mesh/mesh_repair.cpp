@@ -345,6 +345,58 @@ MeshData MeshRepairer::carryAlong(const std::vector<int>& vertexOf) const {
   return out;
 }
 
+// The fast test behind requireNoRepairNeeded, in arrays only (a 10⁶-face file is read in about a second; hash maps
+// would cost several): no face that repeats a vertex or breaks the triangle inequality of its positions, no edge in
+// more than two faces, one fan per vertex. Halfedges are bucketed by their smaller endpoint, each bucket sorted by the
+// other; the corners are joined across every edge of two faces, and each vertex must see one root.
+bool isManifoldAsGiven(const MeshData& d) {
+  const int nF = static_cast<int>(d.faces.size()), nV = d.nVertices;
+  for (const auto& f : d.faces) {
+    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) return false;
+    if (d.positions.empty()) continue;
+    double l[3];
+    for (int k = 0; k < 3; ++k) l[k] = (d.positions[f[k]] - d.positions[f[(k + 1) % 3]]).norm();
+    if (!isValidTriangle(d.background, l[0], l[1], l[2])) return false;
+  }
+  std::vector<int> start(nV + 1, 0);
+  for (const auto& f : d.faces)
+    for (int k = 0; k < 3; ++k) ++start[std::min(f[k], f[(k + 1) % 3]) + 1];
+  for (int v = 0; v < nV; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<int, int>> bucket(3 * static_cast<size_t>(nF));  // (other endpoint, halfedge)
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int h = 0; h < 3 * nF; ++h) {
+    const int a = d.faces[h / 3][h % 3], b = d.faces[h / 3][(h % 3 + 1) % 3];
+    bucket[fill[std::min(a, b)]++] = {std::max(a, b), h};
+  }
+  Fans fans(3 * nF);
+  auto tipCorner = [](int h) { return 3 * (h / 3) + (h % 3 + 1) % 3; };
+  for (int v = 0; v < nV; ++v) {
+    std::sort(bucket.begin() + start[v], bucket.begin() + start[v + 1]);
+    for (int i = start[v]; i < start[v + 1];) {
+      int j = i;
+      while (j < start[v + 1] && bucket[j].first == bucket[i].first) ++j;
+      if (j - i > 2) return false;
+      if (j - i == 2) {
+        const int h = bucket[i].second, g = bucket[i + 1].second;
+        if (d.faces[h / 3][h % 3] == d.faces[g / 3][g % 3]) {
+          fans.join(h, g), fans.join(tipCorner(h), tipCorner(g));
+        } else {
+          fans.join(h, tipCorner(g)), fans.join(tipCorner(h), g);
+        }
+      }
+      i = j;
+    }
+  }
+  std::vector<int> rootOf(nV, -1);
+  for (int c = 0; c < 3 * nF; ++c) {
+    int& r = rootOf[d.faces[c / 3][c % 3]];
+    const int root = fans.find(c);
+    if (r >= 0 && r != root) return false;
+    r = root;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string RepairOptions::validate() const {
@@ -402,7 +454,12 @@ MeshData repairMesh(const MeshData& data, const RepairOptions& options, RepairRe
 }
 
 void requireNoRepairNeeded(const MeshData& data) {
-  if (!data.cornerEdges.empty()) return;
+  if (!data.cornerEdges.empty() || data.nVertices <= 0) return;
+  for (const auto& f : data.faces)
+    for (int v : f)
+      if (v < 0 || v >= data.nVertices) return;  // toTriangulation names the index
+  if (!data.positions.empty() && static_cast<int>(data.positions.size()) != data.nVertices) return;
+  if (isManifoldAsGiven(data)) return;
   RepairOptions o;
   o.mergeTolerance = -1;
   o.degenerateTolerance = 0;  // exactly toTriangulation's criterion: the strict triangle inequality
