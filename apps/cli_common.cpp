@@ -9,9 +9,11 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/mesh/mesh_repair.h"
 #include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/metric/sampled_field_io.h"
 #include "conformesh/intrinsic/metric/sampled_metric.h"
@@ -21,6 +23,7 @@ namespace conformesh::apps {
 
 namespace {
 bool gQuiet = false;
+bool gRepair = false;  // --repair of the command being run (one command per process)
 }
 
 void printJson(const nlohmann::json& j) {
@@ -48,7 +51,24 @@ std::function<void(int, int)> countingProgress(const std::string& what) {
 }
 
 intrinsic::MeshData loadMesh(const std::string& path) {
-  return intrinsic::readMesh(path);
+  if (!gRepair) {
+    intrinsic::MeshData data = intrinsic::readMesh(path);
+    intrinsic::requireNoRepairNeeded(data);
+    return data;
+  }
+  intrinsic::ReadOptions read;
+  read.keepDegenerateFaces = true;
+  intrinsic::RepairReport report;
+  intrinsic::MeshData data = intrinsic::repairMesh(intrinsic::readMesh(path, read), {}, &report);
+  std::istringstream lines(report.summary());
+  for (std::string line; std::getline(lines, line);) progress("repair of " + path + ": " + line);
+  if (!report.changedAnything()) progress("repair of " + path + ": nothing to repair");
+  return data;
+}
+
+void addRepairOption(CLI::App* sub) {
+  sub->add_flag("--repair", gRepair,
+                "Repair the input mesh first, as `conformesh repair` does (off)");
 }
 
 std::map<std::string, double> parseParameters(const std::vector<std::string>& args) {

@@ -55,8 +55,12 @@ void setQuiet(bool quiet);
 // most every 5 seconds (and never for a loop that ends sooner).
 std::function<void(int, int)> countingProgress(const std::string& what);
 
-// Reads a mesh file, or throws InputError naming it.
+// Reads a mesh file, or throws InputError naming it. With --repair given (addRepairOption), the file is repaired
+// (intrinsic/mesh/mesh_repair.h, default RepairOptions) and each repair printed as a progress line; without it, a file
+// that only repair would make a manifold is refused with the first defect and a pointer to --repair.
 intrinsic::MeshData loadMesh(const std::string& path);
+// Registers `--repair` on a command that reads a mesh; loadMesh then repairs what it reads.
+void addRepairOption(CLI::App* sub);
 
 // Parses `--param key=value` arguments into a map; throws InputError naming the argument when it is not key=number.
 std::map<std::string, double> parseParameters(const std::vector<std::string>& args);

@@ -16,5 +16,7 @@ void registerRefineCommand(CLI::App& app);
 void registerLayoutCommand(CLI::App& app);
 void registerEmbedCommand(CLI::App& app);
 void registerSweepCommand(CLI::App& app);
+void registerFieldCommand(CLI::App& app);
+void registerRepairCommand(CLI::App& app);
 
 }  // namespace conformesh::apps

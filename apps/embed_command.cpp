@@ -117,6 +117,7 @@ void registerEmbedCommand(CLI::App& app) {
       "Example: conformesh remesh ellipsoid --eps 0.1 -o e.ply && conformesh embed e.ply -o fit.ply\n"
       "Details: docs/cli.md#embed");
   sub->add_option("input", o->input, "Mesh with edge lengths (.ply with an edge element, or positions)")->required();
+  addRepairOption(sub);
   sub->add_option("-o,--output", o->output, "Write the fitted mesh here (.ply keeps lengths and residuals)");
   sub->add_option("--init", o->init, "Start from the vertex positions of this file (same vertices as the input)");
   sub->add_option("--tolerance", o->tolerance, "Largest relative edge residual accepted as isometric (> 0)")

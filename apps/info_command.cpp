@@ -28,9 +28,7 @@ double degrees(double radians) {
 
 nlohmann::json toJson(const intrinsic::MeshSummary& s, const intrinsic::ConversionReport& conv) {
   nlohmann::json j = refine::meshSummaryJson(s);
-  j["reoriented_faces"] = conv.build.reorientedFaces;
-  j["unreferenced_vertices_removed"] = conv.unreferencedVerticesRemoved;
-  j["lengths_from"] = conv.lengthsFromPositions ? "positions" : "edge element";
+  j.update(refine::readingJson(conv));
   return j;
 }
 
@@ -61,6 +59,8 @@ void printText(const std::string& path, const intrinsic::MeshSummary& s, const i
   line("non-Delaunay edges",
        std::to_string(s.nonDelaunayEdges) + " (" + num(100 * s.nonDelaunayFraction) + " % of interior edges)");
   if (conv.build.reorientedFaces > 0) line("reoriented faces", std::to_string(conv.build.reorientedFaces));
+  if (conv.polygonsTriangulated > 0) line("polygons fan-triangulated", std::to_string(conv.polygonsTriangulated));
+  if (conv.stripTriangles > 0) line("triangles from tristrips", std::to_string(conv.stripTriangles));
   if (conv.unreferencedVerticesRemoved > 0)
     line("unreferenced vertices", std::to_string(conv.unreferencedVerticesRemoved) + " (ignored)");
 }
@@ -96,6 +96,7 @@ void registerInfoCommand(CLI::App& app) {
       "info", "Report a mesh's topology, curvature, Gauss-Bonnet residual, angles and Delaunay-ness");
   sub->footer("Example: conformesh info bunny.ply --json\nDetails: docs/cli.md#info");
   sub->add_option("file", o->input, "Mesh file (.obj, .off, .ply)")->required();
+  addRepairOption(sub);
   sub->add_flag("--json", o->json, "Print the report as JSON");
   sub->add_option("--delaunay", o->delaunayOutput, "Also write the intrinsic Delaunay triangulation here (PLY)");
   sub->callback([o] { runInfo(*o); });

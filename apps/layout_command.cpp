@@ -243,6 +243,7 @@ void registerLayoutCommand(CLI::App& app) {
       "Details: docs/cli.md#layout (theory: docs/layout.md)");
   sub->add_option("input", o->input, "Input mesh (OFF, OBJ, PLY; positions or edge lengths)")->required();
   sub->add_option("-o,--output", o->output, "Output file: .svg, .png or .ply")->required();
+  addRepairOption(sub);
   sub->add_option("--tiles", o->tiles, "Rings of tiles of the universal cover in pictures (0..4)")
       ->capture_default_str()
       ->check(untyped(CLI::Range(0, 4)));

@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
   conformesh::apps::registerLayoutCommand(app);
   conformesh::apps::registerEmbedCommand(app);
   conformesh::apps::registerSweepCommand(app);
+  conformesh::apps::registerFieldCommand(app);
+  conformesh::apps::registerRepairCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -167,6 +167,7 @@ void registerRefineCommand(CLI::App& app) {
   sub->footer("Example: conformesh refine torus.ply --eps 0.02 -o torus_refined.ply\nDetails: docs/cli.md#refine");
   sub->add_option("input", args->input, "Input mesh (.ply with edge lengths, or .obj/.off/.ply with positions)")
       ->required();
+  addRepairOption(sub);
   sub->add_option("--eps", args->epsilon, "Size bound: largest circumradius (times exp(-lambda)), > 0")->required();
   sub->add_option("--ratio", args->ratio, "Shape bound B = circumradius / shortest edge, >= 1 (sqrt 2: 20.7 deg)")
       ->capture_default_str();

@@ -143,6 +143,7 @@ void registerRemeshCommand(CLI::App& app) {
       ->check(oneOf({"ruppert", "chew"}))
       ->capture_default_str();
   sub->add_option("-o,--output", a->output, "Output PLY (edge lengths, vertex fields)")->required();
+  addRepairOption(sub);
   sub->add_option("--vtk", a->vtk, "Also write legacy VTK for ParaView");
   sub->add_flag("--json", a->json, "Print the report as JSON");
   sub->add_flag("--no-check", a->noCheck, "Skip the curvature-measure check");

@@ -116,6 +116,7 @@ void registerUniformizeCommand(CLI::App& app) {
   sub->add_option("input", o->input, "Input mesh (OBJ, OFF or PLY; lengths from the PLY edge element if present)")
       ->required();
   sub->add_option("-o,--output", o->output, "Output PLY (T0*)")->required();
+  addRepairOption(sub);
   sub->add_option("--method", o->method, "Flow: yamabe, circle-packing or inversive-distance (closed genus >= 1)")
       ->check(oneOf({"yamabe", "circle-packing", "inversive-distance"}))
       ->capture_default_str();

@@ -23,9 +23,8 @@ TriangulationPtr fromMeshData(const intrinsic::MeshData& data) {
   intrinsic::ConversionReport conv;
   t->tri = intrinsic::toTriangulation(data, &conv);
   t->source = data.source;
-  t->reorientedFaces = conv.build.reorientedFaces;
-  t->unreferencedVerticesRemoved = conv.unreferencedVerticesRemoved;
-  t->lengthsFromPositions = conv.lengthsFromPositions;
+  t->reading = conv;
+  t->reading.vertexMap.clear();
   const int n = t->tri.mesh.nVertices();
   if (!data.positions.empty()) t->positions.resize(n);
   for (const auto& [name, values] : data.vertexProperties) t->fields[name].resize(n);
@@ -111,7 +110,7 @@ TriangulationPtr fromLengths(const py::handle& F, const py::handle& L, double to
   t->source = where;
   t->tri.mesh = intrinsic::HalfedgeMesh::fromFaces(faces, n, where, &build);
   t->tri.background = background;
-  t->reorientedFaces = build.reorientedFaces;
+  t->reading.build = build;
   const auto& mesh = t->tri.mesh;
   std::vector<double>& el = t->tri.edgeLengths;
   el.assign(mesh.nEdges(), std::nan(""));
@@ -159,10 +158,8 @@ py::array_t<double> cornerLengths(const Triangulation& t) {
 nlohmann::json summaryJson(const Triangulation& t) {
   // The keys of `conformesh info --json`, "file" being the source.
   nlohmann::json j = refine::meshSummaryJson(intrinsic::summarize(t.tri));
+  j.update(refine::readingJson(t.reading));
   j["file"] = t.source;
-  j["reoriented_faces"] = t.reorientedFaces;
-  j["unreferenced_vertices_removed"] = t.unreferencedVerticesRemoved;
-  j["lengths_from"] = t.lengthsFromPositions ? "positions" : "edge element";
   return j;
 }
 

@@ -20,8 +20,7 @@ struct Triangulation {
   std::vector<Eigen::Vector3d> positions;                   // per vertex, or empty
   std::map<std::string, std::vector<double>> fields;        // per-vertex fields
   std::string source;                                       // for messages and the reports' "input"
-  int reorientedFaces = 0, unreferencedVerticesRemoved = 0;
-  bool lengthsFromPositions = false;
+  intrinsic::ConversionReport reading;                      // what reading it did (reoriented faces, ...); no vertexMap
 };
 using TriangulationPtr = std::shared_ptr<Triangulation>;
 

@@ -109,18 +109,18 @@ MeshFormat formatFromPath(const std::string& path) {
                    "; expected a file name ending in .obj, .off or .ply");
 }
 
-MeshData readMesh(const std::string& path) {
+MeshData readMesh(const std::string& path, const ReadOptions& options) {
   const MeshFormat format = formatFromPath(path);
   const std::string bytes = readWholeFile(path);
   switch (format) {
     case MeshFormat::Obj:
-      return parseObj(bytes, path);
+      return parseObj(bytes, path, options);
     case MeshFormat::Off:
-      return parseOff(bytes, path);
+      return parseOff(bytes, path, options);
     case MeshFormat::Ply:
       break;
   }
-  return parsePly(bytes, path);
+  return parsePly(bytes, path, options);
 }
 
 void writeMesh(const MeshData& data, const std::string& path, const WriteOptions& options) {

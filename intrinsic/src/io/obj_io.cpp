@@ -41,7 +41,7 @@ struct ForwardReference {
 
 }  // namespace
 
-MeshData parseObj(const std::string& bytes, const std::string& source) {
+MeshData parseObj(const std::string& bytes, const std::string& source, const ReadOptions& options) {
   MeshData data;
   data.source = source;
   std::vector<std::pair<int, std::string_view>> comments;
@@ -112,9 +112,10 @@ MeshData parseObj(const std::string& bytes, const std::string& source) {
       // Fan triangulation from the first corner; each triangle must have three distinct vertices.
       for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
         const long long a = corners[0], b = corners[k], c = corners[k + 1];
-        if (a == b || b == c || a == c)
+        if ((a == b || b == c || a == c) && !options.keepDegenerateFaces)
           sc.fail("face " + std::to_string(data.faces.size()) + " repeats vertex " +
-                  std::to_string(a == b || a == c ? a : b) + " (1-based); a triangle needs three distinct vertices");
+                  std::to_string(a == b || a == c ? a : b) +
+                  " (1-based); a triangle needs three distinct vertices (`--repair` drops such faces)");
         data.faces.push_back({static_cast<int>(a - 1), static_cast<int>(b - 1), static_cast<int>(c - 1)});
       }
     } else if (!isIgnoredObjStatement(kw)) {

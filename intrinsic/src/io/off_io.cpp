@@ -33,7 +33,7 @@ void skipExtrasOnLine(detail::TextScanner& sc, const char* after) {
 
 }  // namespace
 
-MeshData parseOff(const std::string& bytes, const std::string& source) {
+MeshData parseOff(const std::string& bytes, const std::string& source, const ReadOptions& options) {
   MeshData data;
   data.source = source;
   std::vector<std::pair<int, std::string_view>> comments;
@@ -108,9 +108,9 @@ MeshData parseOff(const std::string& bytes, const std::string& source) {
     if (n > 3) ++data.polygonsTriangulated;
     for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
       const int a = corners[0], b = corners[k], c = corners[k + 1];
-      if (a == b || b == c || a == c)
+      if ((a == b || b == c || a == c) && !options.keepDegenerateFaces)
         sc.fail("face " + std::to_string(f) + " repeats vertex " + std::to_string(a == b || a == c ? a : b) +
-                "; a triangle needs three distinct vertices");
+                "; a triangle needs three distinct vertices (`--repair` drops such faces)");
       data.faces.push_back({a, b, c});
     }
     skipExtrasOnLine(sc, "the face's vertex indices (a colour)");

@@ -3,7 +3,7 @@
 //
 // Read: `element vertex` (x y z optional — a metric-only mesh has none — and every other scalar property kept by name),
 // `element face` (list `vertex_indices` or `vertex_index`, optional list `edge_index` of corner edge ids for
-// Δ-complexes), `element edge` (vertex1 vertex2 length, other scalars kept by name); every other element and property
+// Δ-complexes), `element tristrips` (list `vertex_indices`, strips separated by -1), `element edge` (vertex1 vertex2 length, other scalars kept by name); every other element and property
 // is skipped, lists included, in every encoding. `comment geometry <name>` sets the background. Binary data is read
 // from memory with memcpy; every count is checked against the bytes that remain before anything is allocated. Errors
 // name the element: "FILE:LINE: ..." in the header and ASCII data, "FILE: face 12: ..." in binary data. docs/formats.md
@@ -483,7 +483,7 @@ void readVertices(Values& in, const PlyElement& el, MeshData& data) {
 
 template <class Values>
 void readFaces(Values& in, const PlyElement& el, MeshData& data, long long nVertices, long long nEdges,
-               const std::string& source) {
+               const std::string& source, const ReadOptions& options) {
   int indices = el.find("vertex_indices");
   if (indices < 0) indices = el.find("vertex_index");
   const int edgeIds = el.find("edge_index");
@@ -532,10 +532,63 @@ void readFaces(Values& in, const PlyElement& el, MeshData& data, long long nVert
     if (corners.size() > 3) ++data.polygonsTriangulated;
     for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
       const int a = corners[0], b = corners[k], c = corners[k + 1];
-      if (!deltaComplex && (a == b || b == c || a == c))
+      if (!deltaComplex && !options.keepDegenerateFaces && (a == b || b == c || a == c))
         in.fail("repeats vertex " + std::to_string(a == b || a == c ? a : b) +
-                "; a triangle needs three distinct vertices (use edge_index for a Δ-complex with self-loops)");
+                "; a triangle needs three distinct vertices (use edge_index for a Δ-complex with self-loops, or "
+                "`--repair` to drop such faces)");
       data.faces.push_back({a, b, c});
+    }
+  }
+}
+
+// `element tristrips` (Stanford scans, VCG): one or more records, each a list `vertex_indices` holding triangle
+// strips separated by -1. Triangle k of a strip v0 v1 v2 ... is (v_k, v_k+1, v_k+2), with v_k and v_k+1 swapped for
+// odd k so that the strip's triangles share one orientation. Triangles that repeat a vertex join strips by convention
+// and are skipped (counted in MeshData::stripDegenerateSkipped).
+template <class Values>
+void readTristrips(Values& in, const PlyElement& el, MeshData& data, long long nVertices, const std::string& source) {
+  const int indices = el.find("vertex_indices");
+  if (indices < 0 || !el.properties[indices].isList || !isIntegerType(el.properties[indices].type))
+    throw InputError(source + ":" + std::to_string(el.line) +
+                     ": element tristrips: expected a list property 'vertex_indices' of an integer type");
+  std::vector<int> strip;
+  const auto flush = [&] {
+    for (std::size_t k = 0; k + 2 < strip.size(); ++k) {
+      int a = strip[k], b = strip[k + 1];
+      const int c = strip[k + 2];
+      if (k % 2 == 1) std::swap(a, b);
+      if (a == b || b == c || a == c) {
+        ++data.stripDegenerateSkipped;
+        continue;
+      }
+      data.faces.push_back({a, b, c});
+      ++data.stripTriangles;
+    }
+    strip.clear();
+  };
+  in.at = {&el, 0, nullptr};
+  for (long long r = 0; r < el.count; ++r) {
+    in.at.index = r;
+    for (std::size_t i = 0; i < el.properties.size(); ++i) {
+      const PlyProperty& p = el.properties[i];
+      in.at.property = &p;
+      if (static_cast<int>(i) != indices) {
+        skipProperty(in, p);
+        continue;
+      }
+      const long long m = readListCount(in, p);
+      for (long long k = 0; k < m; ++k) {
+        const long long v = in.integer(p.type);
+        if (v == -1) {
+          flush();
+          continue;
+        }
+        if (v < 0 || v >= nVertices)
+          in.fail("vertex index " + std::to_string(v) + " is out of range [0, " + std::to_string(nVertices) +
+                  ") (-1 separates strips)");
+        strip.push_back(static_cast<int>(v));
+      }
+      flush();
     }
   }
 }
@@ -608,7 +661,7 @@ bool isLengthEdgeElement(const PlyElement& el) {
 }
 
 template <class Values>
-void readBody(Values& in, const PlyHeader& h, MeshData& data) {
+void readBody(Values& in, const PlyHeader& h, MeshData& data, const ReadOptions& options) {
   long long nVertices = 0;
   long long nEdges = -1;  // -1: no edge element with lengths
   for (const PlyElement& el : h.elements) {
@@ -625,7 +678,10 @@ void readBody(Values& in, const PlyHeader& h, MeshData& data) {
     if (el.name == "vertex") {
       readVertices(in, el, data);
     } else if (el.name == "face") {
-      readFaces(in, el, data, nVertices, nEdges, data.source);
+      readFaces(in, el, data, nVertices, nEdges, data.source, options);
+      haveFaces = true;
+    } else if (el.name == "tristrips") {
+      readTristrips(in, el, data, nVertices, data.source);
       haveFaces = true;
     } else if (isLengthEdgeElement(el)) {
       readEdges(in, el, data, nVertices);
@@ -633,8 +689,11 @@ void readBody(Values& in, const PlyHeader& h, MeshData& data) {
       skipElement(in, el);
     }
   }
-  if (!haveFaces) throw InputError(data.source + ": no 'element face' in the header; expected a triangle mesh");
-  if (data.faces.empty()) throw InputError(data.source + ": element face is empty; expected a triangle mesh");
+  if (!haveFaces)
+    throw InputError(data.source + ": no 'element face' or 'element tristrips' in the header; expected a triangle mesh");
+  if (data.faces.empty())
+    throw InputError(data.source + ": element face" + (data.stripDegenerateSkipped > 0 ? " (or tristrips)" : "") +
+                     " is empty; expected a triangle mesh");
   data.nVertices = static_cast<int>(nVertices);
 }
 
@@ -721,17 +780,17 @@ class PlyBodyWriter {
 
 }  // namespace
 
-MeshData parsePly(const std::string& bytes, const std::string& source) {
+MeshData parsePly(const std::string& bytes, const std::string& source, const ReadOptions& options) {
   MeshData data;
   data.source = source;
   const PlyHeader h = parseHeader(bytes, data);
   checkCountsAgainstSize(h, bytes.size(), source);
   if (h.encoding == PlyEncoding::Ascii) {
     AsciiValues in(bytes, h.dataOffset, h.dataLine, source);
-    readBody(in, h, data);
+    readBody(in, h, data, options);
   } else {
     BinaryValues in(bytes, h.dataOffset, h.encoding == PlyEncoding::BinaryBigEndian, source);
-    readBody(in, h, data);
+    readBody(in, h, data, options);
   }
   checkPropertylessVertexCount(h, data);
   checkCornerEdges(data);

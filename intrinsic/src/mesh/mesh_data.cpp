@@ -36,6 +36,7 @@ class TriangulationBuilder {
       lengthsFromPositions();
     }
     validateLengths(tri_, src_);
+    report_.polygonsTriangulated = data_.polygonsTriangulated, report_.stripTriangles = data_.stripTriangles;
     if (reportOut) *reportOut = std::move(report_);
     return std::move(tri_);
   }

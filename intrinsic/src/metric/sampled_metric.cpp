@@ -9,6 +9,7 @@
 #include <Eigen/SparseLU>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/metric/sampled_field_checks.h"
 
 namespace conformesh::intrinsic {
 
@@ -72,6 +73,10 @@ SampledMetric::SampledMetric(const SampledField& field) : field_(field) {
   if (poles_ && f.nu % 2 != 0)
     throw InputError(src + ": a pole-to-pole field needs an even NU (the sample across the pole is at u + pi), found " +
                      std::to_string(f.nu));
+  // The mistakes of handing a field over, named before the per-sample checks (a sphere's g_uu = 0 end row would
+  // otherwise be reported as a sample that is not positive definite).
+  checkFieldGridOrder(f);
+  checkFieldPoles(f);
   for (int j = 0; j < f.nv; ++j)
     for (int i = 0; i < f.nu; ++i) {
       const int k = j * f.nu + i;

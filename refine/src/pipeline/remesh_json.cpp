@@ -54,6 +54,14 @@ nlohmann::json refineStatisticsJson(const RefineStatistics& s) {
           {"trace_steps", s.traceSteps}};
 }
 
+nlohmann::json readingJson(const intrinsic::ConversionReport& reading) {
+  return {{"reoriented_faces", reading.build.reorientedFaces},
+          {"unreferenced_vertices_removed", reading.unreferencedVerticesRemoved},
+          {"polygons_fan_triangulated", reading.polygonsTriangulated},
+          {"tristrip_triangles", reading.stripTriangles},
+          {"lengths_from", reading.lengthsFromPositions ? "positions" : "edge element"}};
+}
+
 nlohmann::json verificationJson(const OutputVerification& check) {
   return {{"passed", check.passed()},
           {"failures", check.failures},

@@ -760,3 +760,52 @@ TEST_CASE("every mesh extracted from CGAL's data set parses and round-trips thro
   }
   REQUIRE(parsed >= 5);
 }
+
+// A Stanford-style scan: faces as one `element tristrips` record. The strip 0 1 2 3 4 5 over a 2 × 3 grid of points
+// (v_k at x = k/2, y = k mod 2) unrolls to (0,1,2), (2,1,3), (2,3,4), (4,3,5) — odd triangles with their first two
+// vertices swapped, so all four share one orientation — then -1 and a second strip 4 5 6 6: its triangle (4,5,6) runs
+// along 4→5 against (4,3,5)'s 5→4, and (6,5,6) (the trailing 6 6, a strip join) repeats a vertex: skipped, counted.
+TEST_CASE("PLY tristrips are unrolled into consistently oriented triangles, in ASCII and binary", "[mesh_io][ply]") {
+  const std::string header =
+      "element vertex 7\nproperty float x\nproperty float y\nproperty float z\n"
+      "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+  const float xyz[7][3] = {{0, 0, 0}, {0.5f, 1, 0}, {1, 0, 0}, {1.5f, 1, 0}, {2, 0, 0}, {2.5f, 1, 0}, {3, 1, 0}};
+  const std::vector<int> strips = {0, 1, 2, 3, 4, 5, -1, 4, 5, 6, 6};
+  std::string ascii = "ply\nformat ascii 1.0\n" + header;
+  for (const auto& p : xyz) ascii += std::to_string(p[0]) + " " + std::to_string(p[1]) + " 0\n";
+  ascii += std::to_string(strips.size());
+  for (int v : strips) ascii += " " + std::to_string(v);
+  ascii += "\n";
+  std::string binary = "ply\nformat binary_little_endian 1.0\n" + header;
+  auto put = [&](const void* p, std::size_t n) { binary.append(static_cast<const char*>(p), n); };
+  for (const auto& p : xyz) put(p, 12);
+  const std::int32_t n = static_cast<std::int32_t>(strips.size());
+  put(&n, 4);
+  for (std::int32_t v : strips) put(&v, 4);
+  for (const std::string* bytes : {&ascii, &binary}) {
+    const MeshData d = parsePly(*bytes, "scan.ply");
+    const std::vector<std::array<int, 3>> expected = {{0, 1, 2}, {2, 1, 3}, {2, 3, 4}, {4, 3, 5}, {4, 5, 6}};
+    CHECK(d.faces == expected);
+    CHECK(d.stripTriangles == 5);
+    CHECK(d.stripDegenerateSkipped == 1);
+    ConversionReport conv;
+    const IntrinsicTriangulation tri = toTriangulation(d, &conv);
+    CHECK(conv.build.reorientedFaces == 0);  // the strip's own orientation is consistent
+    CHECK(conv.stripTriangles == 5);
+    CHECK(tri.mesh.nVertices() == 7);
+  }
+  CHECK_THROWS_WITH(parsePly("ply\nformat ascii 1.0\n" + header + "0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n0 0 0\n" +
+                                 "3 0 1 9\n",
+                             "bad.ply"),
+                    Catch::Contains("bad.ply") && Catch::Contains("vertex index 9 is out of range [0, 7)"));
+}
+
+TEST_CASE("a face repeating a vertex is refused with the --repair hint, or kept for repair", "[mesh_io][off]") {
+  const std::string off = "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n4 1 3 3 2\n";
+  CHECK_THROWS_WITH(parseOff(off, "q.off"), Catch::Contains("repeats vertex 3") && Catch::Contains("`--repair`"));
+  ReadOptions keep;
+  keep.keepDegenerateFaces = true;
+  const MeshData d = parseOff(off, "q.off", keep);
+  CHECK(d.faces.size() == 3);  // the quad's fan: (1, 3, 3) and (1, 3, 2)
+  CHECK(d.polygonsTriangulated == 1);
+}

@@ -19,16 +19,24 @@ enum class PlyEncoding { Ascii, BinaryLittleEndian, BinaryBigEndian };
 MeshFormat formatFromPath(const std::string& path);
 
 // Parses from memory; `source` names the data in error messages (and becomes MeshData::source). These are what the
-// fuzz targets call. A file without faces is an error. Polygons are fan-triangulated (MeshData::polygonsTriangulated).
+// fuzz targets call. A file without faces is an error. Polygons are fan-triangulated from their first corner
+// (MeshData::polygonsTriangulated; positions are not used, so a non-convex polygon may fold); PLY `tristrips` are
+// unrolled (MeshData::stripTriangles).
 // Coordinates, lengths and properties must be finite, lengths positive, indices in range; a triangle may repeat a
 // vertex only in a PLY Δ-complex (face property edge_index). Element counts are checked against the bytes that remain
 // before anything is allocated. Connectivity (manifoldness, orientation) is left to toTriangulation().
-MeshData parseObj(const std::string& bytes, const std::string& source);
-MeshData parseOff(const std::string& bytes, const std::string& source);
-MeshData parsePly(const std::string& bytes, const std::string& source);
+struct ReadOptions {
+  // Keep triangles that repeat a vertex (a degenerate face, or a polygon's fan triangle next to a repeated corner)
+  // instead of refusing the file, for repairMesh (mesh/mesh_repair.h) to drop. Default: refused, and the error says
+  // that `--repair` drops such faces.
+  bool keepDegenerateFaces = false;
+};
+MeshData parseObj(const std::string& bytes, const std::string& source, const ReadOptions& options = {});
+MeshData parseOff(const std::string& bytes, const std::string& source, const ReadOptions& options = {});
+MeshData parsePly(const std::string& bytes, const std::string& source, const ReadOptions& options = {});
 
 // Reads a file by extension. Throws InputError for a missing/unreadable file too.
-MeshData readMesh(const std::string& path);
+MeshData readMesh(const std::string& path, const ReadOptions& options = {});
 
 struct WriteOptions {
   PlyEncoding plyEncoding = PlyEncoding::BinaryLittleEndian;

@@ -32,13 +32,16 @@ struct MeshData {
   std::map<std::string, std::vector<double>> vertexProperties;  // e.g. "u", "v", "lambda", "curvature"
   std::map<std::string, std::vector<double>> edgeProperties;    // parallel to `edges`
   std::vector<std::string> comments;                            // free-text header comments (not "geometry ...")
-  int polygonsTriangulated = 0;  // polygons with more than three corners that the reader fan-triangulated
+  int polygonsTriangulated = 0;    // polygons with more than three corners that the reader fan-triangulated
+  int stripTriangles = 0;          // triangles read from PLY `element tristrips`
+  int stripDegenerateSkipped = 0;  // strip triangles that repeat a vertex (strip joins), skipped
 };
 
 struct ConversionReport {
   BuildReport build;
   int unreferencedVerticesRemoved = 0;
   bool lengthsFromPositions = false;
+  int polygonsTriangulated = 0, stripTriangles = 0;  // copied from MeshData: what the reader triangulated
   // Index of each input vertex in the triangulation, kInvalid for a removed (unreferenced) vertex; use it to carry
   // per-vertex properties and positions along.
   std::vector<int> vertexMap;

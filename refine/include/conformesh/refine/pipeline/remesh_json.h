@@ -21,6 +21,10 @@ nlohmann::json qualityJson(const QualityReport& q);
 nlohmann::json uniformizationJson(const intrinsic::UniformizationReport& u);
 nlohmann::json refineStatisticsJson(const RefineStatistics& s);
 // Summary figures and the histogram; per-vertex values are left to the output files.
+// What reading a mesh file did (mesh_data.h ConversionReport): reoriented_faces, unreferenced_vertices_removed,
+// polygons_fan_triangulated, tristrip_triangles, lengths_from ("positions" or "edge element").
+nlohmann::json readingJson(const intrinsic::ConversionReport& reading);
+
 // An output's verification (output_verification.h): passed, failures, faces_checked, area_relative_error. The
 // command adds the name it wrote ("written").
 nlohmann::json verificationJson(const OutputVerification& check);
