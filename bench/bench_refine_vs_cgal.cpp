@@ -15,6 +15,8 @@
 //   build-bench/bench/bench_refine_vs_cgal --scaling          # conformesh alone, 10k .. 1M vertices
 //   build-bench/bench/bench_refine_vs_cgal --compare20k 7     # alternating rounds at 20k, minimum per tool
 //   build-bench/bench/bench_refine_vs_cgal --below-sqrt2 1.12 # Ruppert's and Chew's rule, and CGAL, at B = 1.12
+//   build-bench/bench/bench_refine_vs_cgal --peers NODE_MODULES DRIVER [ROUNDS]
+//                                             # conformesh, CGAL and Triangle (wasm, bench/bench_refine_peers.sh)
 //   build-bench/bench/bench_refine_vs_cgal                    # Google Benchmark timings at 20k vertices
 #include <benchmark/benchmark.h>
 
@@ -272,6 +274,92 @@ int scaling() {
   return 0;
 }
 
+// === Triangle (npm triangle-wasm in node, driven by bench/triangle_driver.mjs): one JSON line per call.
+struct TriangleOutcome {
+  Outcome o;
+  double area = 0;
+  std::string error;  // non-empty when the wasm module aborted (its fixed 16 MiB heap)
+};
+
+// The number after "key": in a one-line JSON object, or NaN.
+double jsonNumber(const std::string& line, const char* key) {
+  const std::string k = std::string("\"") + key + "\":";
+  const size_t at = line.find(k);
+  return at == std::string::npos ? NAN : std::atof(line.c_str() + at + k.size());
+}
+
+TriangleOutcome runTriangle(const std::string& nodeModules, const std::string& driver, const std::string& args) {
+  const std::string cmd = "node '" + driver + "' '" + nodeModules + "' " + args + " 2>/dev/null";
+  TriangleOutcome t;
+  FILE* p = popen(cmd.c_str(), "r");
+  if (p == nullptr) return t.error = "popen failed", t;
+  std::string line;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, p) != nullptr) line += buf;
+  pclose(p);
+  const size_t err = line.find("\"error\":");
+  if (err != std::string::npos || line.empty()) return t.error = line.empty() ? "no output" : line, t;
+  t.area = jsonNumber(line, "area");
+  t.o.vertices = static_cast<long>(jsonNumber(line, "vertices"));
+  t.o.seconds = jsonNumber(line, "seconds");
+  t.o.minAngle = jsonNumber(line, "minAngle");
+  t.o.meanMinAngle = jsonNumber(line, "meanMinAngle");
+  return t;
+}
+
+// One target of --peers: each tool calibrated to the target vertex count, then `rounds` alternating rounds
+// (conformesh, CGAL, Triangle; each a fresh process taking its best of 5), the minimum per tool printed with the
+// ratios to conformesh's.
+void peersRow(long target, int rounds, const std::string& nodeModules, const std::string& driver) {
+  const double angle = std::asin(1 / (2 * gB)) * kDeg;
+  char angleArg[32];
+  std::snprintf(angleArg, sizeof angleArg, "%.4f", angle);
+  const double eps = calibrate([](double e) { return runConformesh(e); }, target, std::sqrt(1.75 / target));
+#ifdef CONFORMESH_HAVE_CGAL
+  const double size = calibrate(runCgal, target, std::sqrt(6.0 / target));
+#endif
+  const TriangleOutcome cal =
+      runTriangle(nodeModules, driver, "calibrate " + std::to_string(target) + " " + angleArg);
+  Outcome best[3];
+  best[0].seconds = best[1].seconds = best[2].seconds = INFINITY;
+  std::string triangleError = cal.error;
+  for (int r = 0; r < rounds; ++r) {
+    const Outcome a = measure("conformesh", eps, 5).first;
+    if (a.seconds < best[0].seconds) best[0] = a;
+#ifdef CONFORMESH_HAVE_CGAL
+    const Outcome b = measure("cgal", size, 5).first;
+    if (b.seconds < best[1].seconds) best[1] = b;
+#endif
+    if (!triangleError.empty()) continue;
+    char areaArg[40];
+    std::snprintf(areaArg, sizeof areaArg, "%.17g", cal.area);
+    const TriangleOutcome c = runTriangle(nodeModules, driver, std::string("run ") + areaArg + " 5 " + angleArg);
+    if (!c.error.empty()) triangleError = c.error;
+    else if (c.o.seconds < best[2].seconds) best[2] = c.o;
+  }
+  const char* names[3] = {"conformesh", "CGAL 5.5", "Triangle (wasm)"};
+  for (int k = 0; k < 3; ++k) {
+    if (k == 2 && !triangleError.empty()) {
+      std::printf("| %-15s | %8ld | stopped: %s", names[k], target, triangleError.c_str());
+      if (triangleError.back() != '\n') std::printf("\n");
+      continue;
+    }
+    if (std::isinf(best[k].seconds)) continue;  // CGAL not built
+    std::printf("| %-15s | %8ld | %9ld | %9.4f | %6.2f | %8.2f | %9.2f |\n", names[k], target, best[k].vertices,
+                best[k].seconds, best[k].seconds / best[0].seconds, best[k].minAngle, best[k].meanMinAngle);
+  }
+  std::fflush(stdout);
+}
+
+int peers(const std::string& nodeModules, const std::string& driver, int rounds) {
+  std::printf("B = %.4f: conformesh eps, CGAL aspect bound %.4f, Triangle -q%.4f; %d alternating rounds, best of 5 each\n",
+              gB, 1 / (4 * gB * gB), std::asin(1 / (2 * gB)) * kDeg, rounds);
+  std::printf("| tool            |   target |  vertices | CPU s     | ×conf. | min ang° | mean min° |\n");
+  std::printf("|-----------------|---------:|----------:|----------:|-------:|---------:|----------:|\n");
+  for (long target : {20000L, 40000L, 200000L}) peersRow(target, target > 100000 ? 1 : rounds, nodeModules, driver);
+  return 0;
+}
+
 void BM_conformesh_20k(benchmark::State& state) {
   const double eps = std::sqrt(1.75 / 20000);
   for (auto _ : state) benchmark::DoNotOptimize(runConformesh(eps).vertices);
@@ -297,6 +385,8 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--table") == 0) return table();
     if (std::strcmp(argv[i], "--scaling") == 0) return scaling();
     if (std::strcmp(argv[i], "--below-sqrt2") == 0) return belowSqrt2(i + 1 < argc ? std::atof(argv[i + 1]) : 1.12);
+    if (std::strcmp(argv[i], "--peers") == 0 && i + 2 < argc)
+      return peers(argv[i + 1], argv[i + 2], i + 3 < argc ? std::atoi(argv[i + 3]) : 5);
     if (std::strcmp(argv[i], "--compare20k") == 0) return compare20k(i + 1 < argc ? std::atoi(argv[i + 1]) : 7);
   }
   benchmark::Initialize(&argc, argv);

@@ -7,14 +7,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <queue>
+#include <functional>
+#include <memory>
+#include <mutex>
 #include <string>
+#include <utility>
 
 #include <Eigen/LU>
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/metric/reference_surface.h"
+#include "flow/linalg/two_threads.h"
 
 namespace conformesh::intrinsic {
 
@@ -161,6 +165,7 @@ struct MeasureContext {
   std::vector<double> atom;  // discrete: 2π − Σθ inside, π − Σθ on the boundary (0 there without terms)
   std::vector<SignedIntegral> edgeKg;  // per halfedge; only boundary halfedges are filled
   std::vector<double> turning;         // per vertex: π − α at boundary vertices (smooth), else 0
+  std::vector<int> fanStart, fanFaces;  // per vertex x: its faces in fan-walk order, fanFaces[fanStart[x], fanStart[x+1])
   double smoothTotal = 0, smoothBoundary = 0;
 
   MeasureContext(const IntrinsicTriangulation& mesh, const std::vector<Eigen::Vector3d>& referencePoints,
@@ -184,6 +189,7 @@ struct MeasureContext {
                            unwrapNear(domain, a, ref[m.faceVertex(f, 2)]));
       smoothTotal += face[f].integral;
     }
+    flattenFans();
     atom = vertexCurvatures(mesh);
     turning.assign(m.nVertices(), 0.0);
     edgeKg.assign(m.nHalfedges(), {});
@@ -208,6 +214,21 @@ struct MeasureContext {
       if (!m.isBoundaryVertex(v)) continue;
       turning[v] = vertexTurning(v);
       smoothBoundary += turning[v];
+    }
+  }
+
+  // The faces around every vertex in the order the halfedge fan walk (vertexHalfedge, nextOutgoing) visits them.
+  void flattenFans() {
+    fanStart.assign(m.nVertices() + 1, 0);
+    fanFaces.reserve(m.nFaces() * 3);
+    for (int x = 0; x < m.nVertices(); ++x) {
+      const int start = m.vertexHalfedge(x);
+      int h = start;
+      do {
+        fanFaces.push_back(HalfedgeMesh::face(h));
+        h = m.nextOutgoing(h);
+      } while (h != kInvalid && h != start);
+      fanStart[x + 1] = static_cast<int>(fanFaces.size());
     }
   }
 
@@ -274,11 +295,8 @@ struct MeasureContext {
     }
     for (int x : reached) {
       if (distanceOf(x) >= r) continue;
-      const int start = m.vertexHalfedge(x);
-      int h = start;
-      do {
-        const int f = HalfedgeMesh::face(h);
-        h = m.nextOutgoing(h);
+      for (int fk = fanStart[x]; fk < fanStart[x + 1]; ++fk) {
+        const int f = fanFaces[fk];
         if (faceStamp[f] == stamp) continue;
         faceStamp[f] = stamp;
         const double d[3] = {distanceOf(m.faceVertex(f, 0)), distanceOf(m.faceVertex(f, 1)),
@@ -310,7 +328,7 @@ struct MeasureContext {
           fraction = 1 - (1 - ti) * (1 - tj);
         }
         out.absoluteScale += fraction * face[f].absIntegral;
-      } while (h != kInvalid && h != start);
+      }
     }
     return out;
   }
@@ -322,10 +340,8 @@ struct MeasureContext {
                                        std::vector<int>& faceStamp) const {
     RegionCurvatureMeasure out;
     for (int x : reached) {
-      const int start = m.vertexHalfedge(x);
-      int h = start;
-      do {
-        const int f = HalfedgeMesh::face(h);
+      for (int fk = fanStart[x]; fk < fanStart[x + 1]; ++fk) {
+        const int f = fanFaces[fk];
         if (faceStamp[f] != stamp && distanceOf(m.faceVertex(f, 0)) < r && distanceOf(m.faceVertex(f, 1)) < r &&
             distanceOf(m.faceVertex(f, 2)) < r) {
           faceStamp[f] = stamp;
@@ -339,18 +355,12 @@ struct MeasureContext {
               out.absoluteScale += edgeKg[e].absValue;
             }
         }
-        h = m.nextOutgoing(h);
-      } while (h != kInvalid && h != start);
+      }
     }
     for (int x : reached) {
       if (distanceOf(x) >= r || (!boundaryTerms && m.isBoundaryVertex(x))) continue;
       bool inside = true;
-      const int start = m.vertexHalfedge(x);
-      int h = start;
-      do {
-        inside = inside && faceStamp[HalfedgeMesh::face(h)] == stamp;
-        h = m.nextOutgoing(h);
-      } while (h != kInvalid && h != start && inside);
+      for (int k = fanStart[x]; k < fanStart[x + 1] && inside; ++k) inside = faceStamp[fanFaces[k]] == stamp;
       if (!inside) continue;
       out.discrete += atom[x];
       out.smooth += turning[x];
@@ -358,6 +368,131 @@ struct MeasureContext {
     }
     return out;
   }
+};
+
+// The balls of gaussianCurvatureMeasure, one per vertex: Dijkstra from the centre over the graph of edges, cut at
+// reach = r + the longest edge (so that every triangle the rim cuts has all three distances), then the region's two
+// measures. Each ball costs its size, a fixed fraction of the vertices, so all n of them cost O(n²) (docs/benchmarks.md);
+// this class keeps the constant small: the neighbours with their edge lengths (and in MeasureContext the fans' faces),
+// in the order the halfedge fan walk visits them, are flattened into arrays once, and the balls are shared between two cores
+// (runChunks). Every ball's sums run over the same vertices and faces in the same order as a serial sweep — the
+// Dijkstra pop order, (distance, vertex) ascending — so the results do not depend on the threads.
+class BallSweep {
+ public:
+  BallSweep(const MeasureContext& ctx, const IntrinsicTriangulation& mesh, double radius, MeasureRegion region)
+      : ctx_(ctx), m_(mesh.mesh), radius_(radius), region_(region) {
+    reach_ = radius + *std::max_element(mesh.edgeLengths.begin(), mesh.edgeLengths.end());
+    flattenFans(mesh);
+  }
+
+  // Fills r.discrete, r.smooth, r.absoluteScale and r.relativeError for every vertex, in blocks of a hundredth of the
+  // vertices (progress after each).
+  void run(CurvatureMeasureResult& r, const std::function<void(int, int)>& progress) const {
+    const int nV = m_.nVertices(), block = (nV + 99) / 100;
+    for (int b0 = 0; b0 < nV; b0 += block) {
+      const int b1 = std::min(nV, b0 + block);
+      constexpr int kChunks = 8;
+      runChunks(kChunks, [&](int c) {
+        std::unique_ptr<Scratch> s = takeScratch();
+        for (int v = b0 + (b1 - b0) * c / kChunks; v < b0 + (b1 - b0) * (c + 1) / kChunks; ++v) measureBall(v, *s, r);
+        giveScratch(std::move(s));
+      });
+      if (progress) progress(b1, nV);
+    }
+  }
+
+ private:
+  // Per-thread work arrays, reused from ball to ball (stamps are the centre's index, so nothing is cleared).
+  struct Scratch {
+    std::vector<double> dist;
+    std::vector<int> vertexStamp, faceStamp, reached;
+    std::vector<std::pair<double, int>> heap;
+  };
+
+  // The neighbours of every vertex in the order the halfedge fan walk relaxes them (the tip of each outgoing halfedge,
+  // and at a boundary fan's end the tail of the incoming boundary halfedge), with their edge lengths.
+  void flattenFans(const IntrinsicTriangulation& mesh) {
+    const int nV = m_.nVertices();
+    adjStart_.assign(nV + 1, 0);
+    for (int x = 0; x < nV; ++x) {
+      const int start = m_.vertexHalfedge(x);
+      int h = start;
+      do {
+        adj_.push_back({m_.tip(h), mesh.length(h)});
+        const int hp = HalfedgeMesh::prev(h);
+        if (m_.twin(hp) == kInvalid) adj_.push_back({m_.tail(hp), mesh.length(hp)});
+        h = m_.nextOutgoing(h);
+      } while (h != kInvalid && h != start);
+      adjStart_[x + 1] = static_cast<int>(adj_.size());
+    }
+  }
+
+  std::unique_ptr<Scratch> takeScratch() const {
+    std::lock_guard<std::mutex> lock(poolMutex_);
+    if (pool_.empty()) {
+      auto s = std::make_unique<Scratch>();
+      s->dist.assign(m_.nVertices(), INFINITY);
+      s->vertexStamp.assign(m_.nVertices(), -1);
+      s->faceStamp.assign(m_.nFaces(), -1);
+      return s;
+    }
+    std::unique_ptr<Scratch> s = std::move(pool_.back());
+    pool_.pop_back();
+    return s;
+  }
+  void giveScratch(std::unique_ptr<Scratch> s) const {
+    std::lock_guard<std::mutex> lock(poolMutex_);
+    pool_.push_back(std::move(s));
+  }
+
+  // Dijkstra from v up to reach_: s.reached lists the vertices in pop order, s.dist their distances.
+  void grow(int v, Scratch& s) const {
+    s.reached.clear();
+    s.dist[v] = 0;
+    const auto later = std::greater<std::pair<double, int>>();
+    s.heap.assign(1, {0.0, v});
+    while (!s.heap.empty()) {
+      std::pop_heap(s.heap.begin(), s.heap.end(), later);
+      const auto [dv, x] = s.heap.back();
+      s.heap.pop_back();
+      if (dv > s.dist[x]) continue;
+      if (s.vertexStamp[x] != v) {
+        s.vertexStamp[x] = v;
+        s.reached.push_back(x);
+      }
+      for (int k = adjStart_[x]; k < adjStart_[x + 1]; ++k) {
+        const auto [y, len] = adj_[k];
+        const double dy = dv + len;
+        if (dy <= reach_ && dy < s.dist[y]) {
+          s.dist[y] = dy;
+          s.heap.push_back({dy, y});
+          std::push_heap(s.heap.begin(), s.heap.end(), later);
+        }
+      }
+    }
+  }
+
+  void measureBall(int v, Scratch& s, CurvatureMeasureResult& r) const {
+    grow(v, s);
+    auto distanceOf = [&](int x) { return s.vertexStamp[x] == v ? s.dist[x] : INFINITY; };
+    const RegionCurvatureMeasure b = region_ == MeasureRegion::GeodesicBall
+                                         ? ctx_.sublevelSet(s.reached, distanceOf, radius_, v, s.faceStamp)
+                                         : ctx_.triangleUnion(s.reached, distanceOf, radius_, v, s.faceStamp);
+    for (int x : s.reached) s.dist[x] = INFINITY;
+    r.discrete[v] = b.discrete;
+    r.smooth[v] = b.smooth;
+    r.absoluteScale[v] = b.absoluteScale;
+    r.relativeError[v] = b.absoluteScale > 0 ? (b.discrete - b.smooth) / b.absoluteScale : 0.0;
+  }
+
+  const MeasureContext& ctx_;
+  const HalfedgeMesh& m_;
+  double radius_, reach_ = 0;
+  MeasureRegion region_;
+  std::vector<int> adjStart_;
+  std::vector<std::pair<int, double>> adj_;
+  mutable std::mutex poolMutex_;
+  mutable std::vector<std::unique_ptr<Scratch>> pool_;
 };
 
 }  // namespace
@@ -425,57 +560,13 @@ CurvatureMeasureResult gaussianCurvatureMeasure(const IntrinsicTriangulation& me
 
   // === the regions
   r.radius = options.radiusFraction * std::sqrt(totalArea(mesh));
-  // Distances are needed up to one edge beyond the rim, so that every triangle the rim cuts has all three.
-  const double reach = r.radius + *std::max_element(mesh.edgeLengths.begin(), mesh.edgeLengths.end());
   const int nV = m.nVertices();
   r.discrete.assign(nV, 0.0);
   r.smooth.assign(nV, 0.0);
   r.absoluteScale.assign(nV, 0.0);
   r.relativeError.assign(nV, 0.0);
-  std::vector<double> dist(nV, INFINITY);
-  std::vector<int> reached;
-  std::vector<int> faceStamp(m.nFaces(), -1), vertexStamp(nV, -1);
-  using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
-  auto relax = [&](int y, double dy) {
-    if (dy <= reach && dy < dist[y]) {
-      dist[y] = dy;
-      heap.push({dy, y});
-    }
-  };
-  for (int v = 0; v < nV; ++v) {
-    reached.clear();
-    dist[v] = 0;
-    heap.push({0.0, v});
-    while (!heap.empty()) {
-      const auto [dv, x] = heap.top();
-      heap.pop();
-      if (dv > dist[x]) continue;
-      if (vertexStamp[x] != v) {
-        vertexStamp[x] = v;
-        reached.push_back(x);
-      }
-      const int start = m.vertexHalfedge(x);
-      int h = start;
-      do {
-        relax(m.tip(h), dv + mesh.length(h));
-        // A boundary fan's last neighbour is reached through the incoming boundary halfedge.
-        const int hp = HalfedgeMesh::prev(h);
-        if (m.twin(hp) == kInvalid) relax(m.tail(hp), dv + mesh.length(hp));
-        h = m.nextOutgoing(h);
-      } while (h != kInvalid && h != start);
-    }
-    auto distanceOf = [&](int x) { return vertexStamp[x] == v ? dist[x] : INFINITY; };
-    const RegionCurvatureMeasure b = options.region == MeasureRegion::GeodesicBall
-                                         ? ctx.sublevelSet(reached, distanceOf, r.radius, v, faceStamp)
-                                         : ctx.triangleUnion(reached, distanceOf, r.radius, v, faceStamp);
-    for (int x : reached) dist[x] = INFINITY;
-    r.discrete[v] = b.discrete;
-    r.smooth[v] = b.smooth;
-    r.absoluteScale[v] = b.absoluteScale;
-    r.relativeError[v] = b.absoluteScale > 0 ? (b.discrete - b.smooth) / b.absoluteScale : 0.0;
-    if (options.progress && ((v + 1) % ((nV + 99) / 100) == 0 || v + 1 == nV)) options.progress(v + 1, nV);
-  }
+  const BallSweep sweep(ctx, mesh, r.radius, options.region);
+  sweep.run(r, options.progress);
 
   // === statistics
   r.histogram.assign(options.histogramBins, 0);
