@@ -16,5 +16,6 @@ void registerRefineCommand(CLI::App& app);
 void registerLayoutCommand(CLI::App& app);
 void registerEmbedCommand(CLI::App& app);
 void registerSweepCommand(CLI::App& app);
+void registerViewCommand(CLI::App& app);
 
 }  // namespace conformesh::apps

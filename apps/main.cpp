@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   conformesh::apps::registerLayoutCommand(app);
   conformesh::apps::registerEmbedCommand(app);
   conformesh::apps::registerSweepCommand(app);
+  conformesh::apps::registerViewCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -36,8 +36,8 @@ MeshData mergedEdges(const std::vector<std::array<int, 3>>& faces, const std::ve
     for (int k = 0; k < 3; ++k) {
       const int a = faces[f][k], b = faces[f][(k + 1) % 3];
       if (a < 0 || b < 0)
-        throw InputError(describeAt(o.source, "face " + std::to_string(f) + ": negative vertex index " +
-                                                  std::to_string(std::min(a, b))));
+        throw InputError(describeAt(
+            o.source, "face " + std::to_string(f) + ": negative vertex index " + std::to_string(std::min(a, b))));
       d.nVertices = std::max({d.nVertices, a + 1, b + 1});
       const double l = lengths[f][k];
       if (!std::isfinite(l) || l <= 0)
@@ -69,9 +69,8 @@ IntrinsicTriangulation fromEdgeLengths(const std::vector<std::array<int, 3>>& fa
   if (const std::string bad = options.validate(); !bad.empty())
     throw InputError(describeAt(options.source, "FromEdgeLengthsOptions: " + bad));
   if (faces.size() != lengths.size())
-    throw InputError(describeAt(options.source, "expected one length triple per face (" +
-                                                    std::to_string(faces.size()) + " faces), found " +
-                                                    std::to_string(lengths.size())));
+    throw InputError(describeAt(options.source, "expected one length triple per face (" + std::to_string(faces.size()) +
+                                                    " faces), found " + std::to_string(lengths.size())));
   if (faces.empty()) throw InputError(describeAt(options.source, "the mesh has no faces"));
   return toTriangulation(mergedEdges(faces, lengths, options), report);
 }

@@ -62,12 +62,18 @@ std::string decodeBase64(const std::string& text) {
   int bits = 0;
   for (char c : text) {
     int v;
-    if (c >= 'A' && c <= 'Z') v = c - 'A';
-    else if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
-    else if (c >= '0' && c <= '9') v = c - '0' + 52;
-    else if (c == '+') v = 62;
-    else if (c == '/') v = 63;
-    else continue;  // white space and '=' padding
+    if (c >= 'A' && c <= 'Z')
+      v = c - 'A';
+    else if (c >= 'a' && c <= 'z')
+      v = c - 'a' + 26;
+    else if (c >= '0' && c <= '9')
+      v = c - '0' + 52;
+    else if (c == '+')
+      v = 62;
+    else if (c == '/')
+      v = 63;
+    else
+      continue;  // white space and '=' padding
     acc = (acc << 6) | static_cast<uint32_t>(v);
     bits += 6;
     if (bits >= 8) {
@@ -122,7 +128,10 @@ ParsedVtu parseVtu(const std::string& xml) {
     a.name = unescape(attribute(tag, "Name"));
     a.components = std::stoi(attribute(tag, "NumberOfComponents"));
     const auto cells = xml.rfind("<Cells>", at), points = xml.rfind("<Points>", at), pd = xml.rfind("<PointData", at);
-    a.section = cells != std::string::npos ? "Cells" : points != std::string::npos ? "Points" : pd != std::string::npos ? "PointData" : "";
+    a.section = cells != std::string::npos    ? "Cells"
+                : points != std::string::npos ? "Points"
+                : pd != std::string::npos     ? "PointData"
+                                              : "";
     REQUIRE(attribute(tag, "format") == "binary");
     const std::string raw = decodeBase64(xml.substr(close + 1, end - close - 1));
     REQUIRE(raw.size() >= 8);
@@ -136,7 +145,9 @@ ParsedVtu parseVtu(const std::string& xml) {
   return p;
 }
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(double a, double b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 VtkMesh icosphereWithFields(std::vector<Eigen::Vector2d>& chart) {
   const MeshData ico = makeIcosphere({1, 1.0});

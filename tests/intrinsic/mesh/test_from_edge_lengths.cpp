@@ -24,7 +24,9 @@ namespace {
 const std::vector<std::array<int, 3>> kTetra = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
 const std::vector<std::array<int, 3>> kOcta = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                                {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-std::vector<std::array<double, 3>> constant(size_t n, double l) { return std::vector<std::array<double, 3>>(n, {l, l, l}); }
+std::vector<std::array<double, 3>> constant(size_t n, double l) {
+  return std::vector<std::array<double, 3>>(n, {l, l, l});
+}
 }  // namespace
 
 TEST_CASE("fromEdgeLengths: regular tetrahedron and spherical octahedron match their closed forms", "[mesh][lengths]") {
@@ -43,7 +45,8 @@ TEST_CASE("fromEdgeLengths: regular tetrahedron and spherical octahedron match t
   for (double k : vertexCurvatures(oct)) CHECK(std::abs(k) < 1e-13);  // four right angles per vertex
 }
 
-TEST_CASE("fromEdgeLengths: per-corner lengths of an icosphere give toTriangulation's triangulation", "[mesh][lengths]") {
+TEST_CASE("fromEdgeLengths: per-corner lengths of an icosphere give toTriangulation's triangulation",
+          "[mesh][lengths]") {
   const MeshData ico = makeIcosphere({2, 1.0});
   std::vector<std::array<double, 3>> lengths;
   for (const auto& f : ico.faces)

@@ -20,3 +20,4 @@
 #include "conformesh/embedding/layout/layout_ply.h"
 #include "conformesh/embedding/layout/sphere_layout.h"
 #include "conformesh/embedding/layout/torus_layout.h"
+#include "conformesh/embedding/view/view_page.h"

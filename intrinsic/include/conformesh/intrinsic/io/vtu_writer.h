@@ -1,9 +1,9 @@
 // vtu_writer.h — VTK XML UnstructuredGrid (.vtu) output for ParaView, beside the legacy writer (vtk_writer.h): points,
 // triangles (connectivity, offsets, cell types), every named per-point field, and the chart coordinates.
 //
-// Data arrays are inline base64 binary (format="binary", header_type="UInt64", no compression): the values read back bit
-// for bit, NaN and infinities included (VTK's ASCII XML parser does not read "nan"), at about 11 characters per double
-// against 17–24 for ASCII. docs/formats.md#vtu has the layout.
+// Data arrays are inline base64 binary (format="binary", header_type="UInt64", no compression): the values read back
+// bit for bit, NaN and infinities included (VTK's ASCII XML parser does not read "nan"), at about 11 characters per
+// double against 17–24 for ASCII. docs/formats.md#vtu has the layout.
 #pragma once
 
 #include <string>
