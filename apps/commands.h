@@ -18,5 +18,6 @@ void registerEmbedCommand(CLI::App& app);
 void registerSweepCommand(CLI::App& app);
 void registerFieldCommand(CLI::App& app);
 void registerRepairCommand(CLI::App& app);
+void registerViewCommand(CLI::App& app);
 
 }  // namespace conformesh::apps

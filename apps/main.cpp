@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   conformesh::apps::registerSweepCommand(app);
   conformesh::apps::registerFieldCommand(app);
   conformesh::apps::registerRepairCommand(app);
+  conformesh::apps::registerViewCommand(app);
 
   try {
     app.parse(argc, argv);

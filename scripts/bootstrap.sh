@@ -18,11 +18,12 @@ jobs=${JOBS:-$(nproc)}
 # as the BLAS that CHOLMOD's supernodal factorization calls (faster than the reference BLAS or ATLAS's generic build:
 # docs/benchmarks.md); HDF5 for sampled metric fields; matplotlib for plots; libcgal-demo for CGAL's data set of real
 # meshes that the tests read (made by others, so topology checks are not self-fulfilling); pybind11, NumPy and pytest for
-# the Python package (docs/python.md), built for Debian's /usr/bin/python3.
+# the Python package (docs/python.md), built for Debian's /usr/bin/python3; pkgconf for the installed package's
+# pkg-config test; libjs-three (inlined into `conformesh view` pages) and chromium (the headless test of those pages).
 packages=(build-essential cmake libeigen3-dev libceres-dev libboost-graph-dev libgeographiclib-dev catch2
           libcli11-dev nlohmann-json3-dev libsuitesparse-dev libscotch-dev libopenblas0-pthread libhdf5-dev
           python3-matplotlib libcgal-demo libopenmpi-dev openmpi-bin pybind11-dev python3-pybind11 python3-numpy
-          python3-pytest)
+          python3-pytest pkgconf libjs-three chromium)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

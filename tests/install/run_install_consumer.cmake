@@ -1,16 +1,55 @@
 # cmake -DBUILD=<conformesh build> -DSOURCE=<tests/install> -DMESH=<a mesh file> -P run_install_consumer.cmake
-# Installs the build into BUILD/install-test, builds tests/install against it with find_package(conformesh), runs it.
+# Installs the build into BUILD/install-test, then builds tests/install/consumer.cpp against it twice — with
+# find_package(conformesh), and with `pkg-config --cflags --libs conformesh` (Debian's pkgconf) — and runs both. Also
+# checks that the export set holds only the public libraries (no internal conformesh_warnings) and that each library's
+# umbrella header names every public header of that library.
 set(prefix ${BUILD}/install-test)
 set(consumer ${BUILD}/install-consumer)
 file(REMOVE_RECURSE ${prefix} ${consumer})
-foreach(step
-    "${CMAKE_COMMAND};--install;${BUILD};--prefix;${prefix}"
-    "${CMAKE_COMMAND};-S;${SOURCE};-B;${consumer};-DCMAKE_PREFIX_PATH=${prefix};-DCMAKE_BUILD_TYPE=Release"
-    "${CMAKE_COMMAND};--build;${consumer}"
-    "${consumer}/consumer;${MESH}")
-  execute_process(COMMAND ${step} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+file(MAKE_DIRECTORY ${consumer})
+
+function(run_step)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT status EQUAL 0)
-    message(FATAL_ERROR "install consumer: step `${step}` failed with status ${status}:\n${out}\n${err}")
+    message(FATAL_ERROR "install consumer: step `${ARGN}` failed with status ${status}:\n${out}\n${err}")
+  endif()
+  set(step_out "${out}" PARENT_SCOPE)
+endfunction()
+
+run_step(${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
+
+file(GLOB targets_files ${prefix}/lib*/cmake/conformesh/conformeshTargets*.cmake)
+foreach(f ${targets_files})
+  file(READ ${f} text)
+  if(text MATCHES "conformesh_warnings|conformesh::warnings")
+    message(FATAL_ERROR "install consumer: ${f} exports the internal target conformesh_warnings")
   endif()
 endforeach()
-message(STATUS "install consumer: ${out}")
+foreach(lib intrinsic embedding refine)
+  file(READ ${prefix}/include/conformesh/${lib}/${lib}.h umbrella)
+  file(GLOB_RECURSE headers RELATIVE ${prefix}/include ${prefix}/include/conformesh/${lib}/*.h)
+  foreach(h ${headers})
+    if(NOT h STREQUAL "conformesh/${lib}/${lib}.h" AND NOT umbrella MATCHES "#include \"${h}\"")
+      message(FATAL_ERROR "install consumer: the umbrella header conformesh/${lib}/${lib}.h does not include ${h}")
+    endif()
+  endforeach()
+endforeach()
+
+run_step(${CMAKE_COMMAND} -S ${SOURCE} -B ${consumer}/cmake -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+run_step(${CMAKE_COMMAND} --build ${consumer}/cmake)
+run_step(${consumer}/cmake/consumer ${MESH})
+message(STATUS "install consumer (find_package): ${step_out}")
+
+find_program(PKG_CONFIG pkg-config)
+if(NOT PKG_CONFIG)
+  message(FATAL_ERROR "install consumer: pkg-config not found: apt-get install pkgconf")
+endif()
+file(GLOB pcdir ${prefix}/lib*/pkgconfig)
+set(ENV{PKG_CONFIG_PATH} "${pcdir}")
+run_step(${PKG_CONFIG} --cflags --libs conformesh)
+string(STRIP "${step_out}" flags)
+separate_arguments(flags UNIX_COMMAND "${flags}")
+find_program(CXX NAMES c++ g++ REQUIRED)
+run_step(${CXX} -std=c++17 -O1 ${SOURCE}/consumer.cpp -o ${consumer}/consumer-pkgconfig ${flags})
+run_step(${consumer}/consumer-pkgconfig ${MESH})
+message(STATUS "install consumer (pkg-config): ${step_out}")

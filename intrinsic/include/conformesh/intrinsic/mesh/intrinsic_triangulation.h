@@ -3,6 +3,8 @@
 //
 // This is the object every stage of conformesh passes along: T0 (discretized metric), T0* (uniformized), T1* (refined)
 // and T1 (pulled back). Geometry queries are free functions over it; they read lengths, never positions.
+// To build one from faces and edge lengths, call fromEdgeLengths (from_edge_lengths.h); from a file, readMesh and
+// toTriangulation (mesh_io.h, mesh_data.h).
 #pragma once
 
 #include <string>
