@@ -16,18 +16,15 @@
 #include "conformesh/refine/pipeline/convergence_study.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 #include "metrics.h"
-#include "report_json.h"
 #include "triangulation.h"
 
 namespace conformesh::python {
 
 namespace {
 
-using apps::curvatureMeasureJson;
-using apps::qualityJson;
-using apps::refineStatisticsJson;
-using apps::uniformizationJson;
+using refine::curvatureMeasureJson;
 
 // Interrupt checks inside the refinement loop: every this many insertions (each check costs one GIL round trip).
 constexpr std::int64_t kRefineCheckEvery = 2000;
@@ -170,25 +167,8 @@ RemeshResult remeshMetric(const Metric& metric, const RemeshArgs& a, CallGuard& 
     *shared = refine::remeshMetric(*metric.metric, o);
     const refine::RemeshResult& r = *shared;
     *data = refine::toMeshData(r, *metric.metric, a.eps);
-    // The keys of `conformesh remesh FAMILY --json` (apps/remesh_command.cpp), without the output file names.
-    j = {{"metric", metric.metric->description()},
-         {"eps", a.eps},
-         {"ratio_bound", a.ratio},
-         {"smoothing_passes", smoothing},
-         {"segment_rule", a.segmentRule},
-         {"t0", {{"vertices", r.t0Vertices}, {"faces", r.t0Faces}}},
-         {"uniformization", uniformizationJson(r.uniformization)},
-         {"disk_target", refine::toString(r.diskTarget)},
-         {"refinement", refineStatisticsJson(r.refinement)},
-         {"quality_uniformized", qualityJson(r.uniformQuality)},
-         {"quality", qualityJson(r.quality)},
-         {"inverted_triangles", r.invertedTriangles},
-         {"total_area", intrinsic::totalArea(r.mesh)},
-         {"seconds",
-          {{"discretize", r.seconds.discretize},
-           {"uniformize", r.seconds.uniformize},
-           {"refine", r.seconds.refine},
-           {"pull_back", r.seconds.pullBack}}}};
+    // The keys of `conformesh remesh FAMILY --json` without the output file names (refine/pipeline/remesh_json.h).
+    j = refine::metricRemeshJson(r, *metric.metric, o);
     if (a.check) {
       guard.step("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
       intrinsic::CurvatureMeasureOptions co;
@@ -247,32 +227,9 @@ RemeshResult remeshTriangulation(const Triangulation& in, const RemeshArgs& a, C
     *shared = refine::remeshMesh(in.tri, in.positions, o);
     const refine::MeshRemeshResult& r = *shared;
     *data = refine::toMeshData(r, in.source, a.eps);
-    // The keys of `conformesh remesh MESHFILE --json` (apps/remesh_mesh_input.cpp), without the output file names.
-    j = {{"input", in.source},
-         {"eps", a.eps},
-         {"ratio_bound", a.ratio},
-         {"refine_in", refine::toString(r.refinedIn)},
-         {"smoothing_passes", o.refinement.smoothingPasses},
-         {"segment_rule", a.segmentRule},
-         {"input_mesh",
-          {{"vertices", r.inputVertices}, {"faces", r.inputFaces}, {"area", intrinsic::totalArea(in.tri)}}},
-         {"refinement", refineStatisticsJson(r.refinement)},
-         {"quality", qualityJson(r.quality)},
-         {"inverted_triangles", r.invertedTriangles},
-         {"orientation_checked_triangles", r.orientationChecked},
-         {"same_face_edges", r.sameFaceEdges},
-         {"max_same_face_length_error", r.maxSameFaceLengthError},
-         {"loop_edges", r.loopEdges},
-         {"total_area", intrinsic::totalArea(r.mesh)},
-         {"seconds",
-          {{"uniformize", r.seconds.uniformize}, {"refine", r.seconds.refine}, {"pull_back", r.seconds.pullBack}}}};
-    if (!inInput) {
-      j["uniformization"] = uniformizationJson(r.uniformization);
-      j["quality_uniformized"] = qualityJson(r.uniformQuality);
-      j["path_pieces"] = r.pathPieces;
-      j["input_edge_crossings"] = r.inputEdgeCrossings;
-      j["max_path_excess"] = r.maxBendExcess;
-    }
+    // The keys of `conformesh remesh MESHFILE --json` without the output file names (refine/pipeline/remesh_json.h);
+    // the copy of the input triangulation is O(input) against the remeshing's O(output · log).
+    j = refine::meshRemeshJson(r, refine::MeshInput{in.tri, in.positions, in.source}, o);
     if (a.check) {
       guard.step("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
       intrinsic::CurvatureMeasureOptions co;

@@ -7,5 +7,6 @@ namespace conformesh::python {
 
 void bindPipelines(py::module_& m);
 void bindStudies(py::module_& m);
+void bindRefineAndEmbed(py::module_& m);
 
 }  // namespace conformesh::python

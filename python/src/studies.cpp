@@ -11,7 +11,7 @@
 #include "conformesh/refine/pipeline/convergence_study.h"
 #include "metrics.h"
 #include "pipelines.h"
-#include "report_json.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 #include "triangulation.h"
 
 namespace conformesh::python {
@@ -58,10 +58,10 @@ ConvergenceResult convergence(const Metric& metric, const std::vector<int>& vert
                             {"vertices", L.vertices},
                             {"triangles", L.triangles},
                             {"eps", L.epsilon},
-                            {"quality", apps::qualityJson(L.quality)},
+                            {"quality", refine::qualityJson(L.quality)},
                             {"inverted_triangles", L.invertedTriangles},
                             {"total_area", L.totalArea},
-                            {"gaussian_curvature_measure", apps::curvatureMeasureJson(L.measure, o.measure)},
+                            {"gaussian_curvature_measure", refine::curvatureMeasureJson(L.measure, o.measure)},
                             {"seconds", L.seconds}};
     nlohmann::json row = {{"target_vertices", L.targetVertices},
                           {"vertices", L.vertices},
@@ -102,7 +102,7 @@ ConvergenceResult convergence(const Metric& metric, const std::vector<int>& vert
                       {"t0_vertices", s.t0Vertices},
                       {"ratio_bound", ratio},
                       {"smoothing_passes", o.remesh.refinement.smoothingPasses},
-                      {"uniformization", apps::uniformizationJson(s.uniformization)},
+                      {"uniformization", refine::uniformizationJson(s.uniformization)},
                       {"orders", orders},
                       {"levels", levels}};
   return {rows, toPython(orders), toPython(j)};
