@@ -203,7 +203,7 @@ def icosphere_lengths():
 def test_embed_icosphere_recovers_sphere(icosphere_lengths):
     """Lengths alone (no positions): the fit reproduces every edge to the fit's tolerance and, the convex polyhedron
     being rigid (Cauchy), is the icosphere up to a rigid motion; after Procrustes, the radius 1 and the vertices.
-    The 1e-9 on positions: the fit's edge residuals are round-off (measured 4e-16, 2024 build), and the positions
+    The 1e-9 on positions: the fit's edge residuals are round-off (measured 4e-16), and the positions
     after Procrustes were measured 4.4e-16 from V; 1e-9 allows for the rigidity's conditioning on other builds and
     still tells a different polyhedron with the same lengths (one vertex popped inward moves by ~0.03)."""
     V, t = icosphere_lengths
