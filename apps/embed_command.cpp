@@ -9,6 +9,7 @@
 #include "conformesh/embedding/fit/isometric_embedding.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::apps {
 
@@ -69,21 +70,10 @@ void runEmbed(const EmbedOptions& o) {
   }
 
   if (o.json) {
-    printJson({{"file", o.input},
-               {"output", o.output},
-               {"vertices", tri.mesh.nVertices()},
-               {"edges", tri.mesh.nEdges()},
-               {"start", fit.start},
-               {"tolerance", fit.tolerance},
-               {"isometric", fit.isometric},
-               {"max_relative_residual", fit.maxRelativeResidual},
-               {"rms_relative_residual", fit.rmsRelativeResidual},
-               {"worst_edge", fit.worstEdge},
-               {"regularized_iterations", fit.regularizedIterations},
-               {"iterations", fit.iterations},
-               {"start_seconds", fit.startSeconds},
-               {"fit_seconds", fit.fitSeconds},
-               {"verdict", fit.verdict}});
+    nlohmann::json j = refine::embeddingJson(fit, tri);
+    j["file"] = o.input;
+    j["output"] = o.output;
+    printJson(j);
   } else {
     auto line = [](const char* name, const std::string& value) { std::printf("  %-28s %s\n", name, value.c_str()); };
     auto num = [](double x) {

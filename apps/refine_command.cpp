@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/refine/pipeline/refinement_output.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
@@ -72,66 +73,28 @@ void run(const RefineArgs& args) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const refine::QualityReport q = refine::measureQuality(r.triangulation);
 
-  // Output: same background, lengths, and each vertex's place on the input (face + barycentric coordinates).
-  intrinsic::MeshData out = intrinsic::fromTriangulation(r.triangulation);
+  // Output: same background, lengths, each vertex's place on the input, positions where the input has them (a file
+  // whose unreferenced vertices were dropped has positions indexed by the file, not the triangulation: none then).
+  const bool positionsFit = conv.unreferencedVerticesRemoved == 0;
+  intrinsic::MeshData out =
+      refine::refinementMeshData(r, tri, positionsFit ? data.positions : std::vector<Eigen::Vector3d>{}, graded);
   out.source = args.output;
-  const int nV = r.triangulation.mesh.nVertices();
-  std::vector<double> face(nV), b0(nV), b1(nV), b2(nV);
-  for (int v = 0; v < nV; ++v) {
-    face[v] = r.locations[v].face;
-    b0[v] = r.locations[v].bary[0];
-    b1[v] = r.locations[v].bary[1];
-    b2[v] = r.locations[v].bary[2];
-  }
-  out.vertexProperties["input_face"] = face;
-  out.vertexProperties["input_b0"] = b0;
-  out.vertexProperties["input_b1"] = b1;
-  out.vertexProperties["input_b2"] = b2;
-  if (graded) out.vertexProperties["lambda"] = r.lambda;
-  // Euclidean input with positions: a location is a point of the input's flat triangle, so its position is the
-  // barycentric combination of the corners (extended linearly for boundary-circle points beyond a chord).
-  if (tri.background == intrinsic::Background::Euclidean && !data.positions.empty() &&
-      conv.unreferencedVerticesRemoved == 0)
-    out.positions = refine::interpolatePositions(tri.mesh, data.positions, r.locations);
   intrinsic::WriteOptions wo;
   if (args.ascii) wo.plyEncoding = intrinsic::PlyEncoding::Ascii;
+  nlohmann::json j = refine::refineJson(r, tri, opt, q, seconds);
+  j["input"] = args.input;
+  j["output"] = args.output;
   const refine::OutputVerification check = refine::verifyRefinement(tri, r);
-  nlohmann::json verification;
-  const std::string written = verifiedOutputPath(check, args.keepFailed, args.output, verification);
+  const std::string written = verifiedOutputPath(check, args.keepFailed, args.output, j);
   if (!written.empty()) {
     progress("writing " + written);
     intrinsic::writeMesh(out, written, wo);
   }
-  rejectIfFailed(check, args.output, written, false, verification);
+  rejectIfFailed(check, args.output, written, args.json, j);
 
   const refine::RefineStatistics& s = r.statistics;
   if (args.json) {
-    printJson({{"input", args.input},
-               {"output", args.output},
-               {"background", intrinsic::toString(tri.background)},
-               {"epsilon", args.epsilon},
-               {"ratio_bound", args.ratio},
-               {"graded", graded},
-               {"seconds", seconds},
-               {"statistics",
-                {{"input_vertices", s.inputVertices},
-                 {"circumcenter_insertions", s.circumcenterInsertions},
-                 {"centroid_insertions", s.centroidInsertions},
-                 {"off_center_insertions", s.offCenterInsertions},
-                 {"boundary_splits", s.boundarySplits},
-                 {"rejected_circumcenters", s.rejectedCircumcenters},
-                 {"segment_rule", args.segmentRule},
-                 {"deleted_vertices", s.deletedVertices},
-                 {"refused_deletions", s.refusedDeletions},
-                 {"flips", s.flips},
-                 {"trace_steps", s.traceSteps},
-                 {"boundary_loops", s.boundaryLoops},
-                 {"circle_loops", s.circleLoops},
-                 {"smoothing_passes", args.smoothing},
-                 {"smoothing_moves", s.smoothingMoves},
-                 {"smoothing_refused", s.smoothingRefused},
-                 {"insertions_after_smoothing", s.insertionsAfterSmoothing}}},
-               {"quality", refine::qualityJson(q)}});
+    printJson(j);
     return;
   }
   std::cout << args.input << " -> " << args.output << " (" << intrinsic::toString(tri.background) << ", " << seconds

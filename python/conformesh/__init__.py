@@ -19,7 +19,11 @@ from . import _conformesh
 from ._conformesh import (
     ConvergenceError,
     ConvergenceResult,
+    EmbedResult,
     LayoutResult,
+    RefineResult,
+    embed,
+    refine,
     convergence,
     layout,
     InputError,
@@ -39,7 +43,11 @@ __version__ = _conformesh.__version__
 __all__ = [
     "ConvergenceError",
     "ConvergenceResult",
+    "EmbedResult",
     "LayoutResult",
+    "RefineResult",
+    "embed",
+    "refine",
     "convergence",
     "layout",
     "InputError",

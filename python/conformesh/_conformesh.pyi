@@ -109,3 +109,30 @@ class LayoutResult:
 
 def layout(tri: Triangulation, *, tolerance: float = ..., tiles: int = ..., centre_vertex: int = ...,
            direction_vertex: int = ..., progress: Progress = ...) -> LayoutResult: ...
+
+class RefineResult:
+    triangulation: Triangulation
+    input_faces: npt.NDArray[np.int32]
+    input_barycentric: npt.NDArray[np.float64]
+    @property
+    def input_locations(self) -> Tuple[npt.NDArray[np.int32], npt.NDArray[np.float64]]: ...
+    conformal_factor: Optional[npt.NDArray[np.float64]]
+    positions: Optional[npt.NDArray[np.float64]]
+    report: Dict[str, Any]
+    def write(self, path: str, ascii: bool = ...) -> None: ...
+
+def refine(tri: Triangulation, eps: float, *, ratio: float = ..., uniform: bool = ...,
+           conformal_factor: Optional[ArrayLike] = ..., boundary: str = ..., segment_rule: str = ...,
+           off_centers: bool = ..., frontal: bool = ..., smoothing: int = ..., smoothing_rule: str = ...,
+           max_insertions: int = ..., keep_failed: bool = ..., progress: Progress = ...) -> RefineResult: ...
+
+class EmbedResult:
+    triangulation: Triangulation
+    positions: npt.NDArray[np.float64]
+    edge_residuals: npt.NDArray[np.float64]
+    isometric: bool
+    verdict: str
+    report: Dict[str, Any]
+
+def embed(tri: Triangulation, *, init: Optional[ArrayLike] = ..., tolerance: float = ..., regularizer: float = ...,
+          landmarks: int = ..., max_iterations: int = ..., strict: bool = ..., progress: Progress = ...) -> EmbedResult: ...

@@ -24,4 +24,5 @@ PYBIND11_MODULE(_conformesh, m) {
   conformesh::python::bindMetrics(metrics);
   conformesh::python::bindPipelines(m);
   conformesh::python::bindStudies(m);
+  conformesh::python::bindRefineAndEmbed(m);
 }

@@ -16,6 +16,7 @@
 #include "conformesh/refine/pipeline/convergence_study.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 #include "metrics.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
 #include "triangulation.h"
@@ -38,12 +39,6 @@ struct UniformizeResult {
   py::object conformalFactor, geometry, positions, report;
 };
 
-// The CLI's verification before exit 0 (output_verification.h), in the report as report['verification']; a failed
-// check raises VerificationError (the CLI's exit 3) unless keep_failed=True, which returns the result as it is.
-void verifyOrRaise(const refine::OutputVerification& check, bool keepFailed, nlohmann::json& report) {
-  report["verification"] = refine::verificationJson(check);
-  if (!check.passed() && !keepFailed) throw VerificationFailed(check.message() + " (keep_failed=True returns it)");
-}
 
 UniformizeResult uniformize(const TriangulationPtr& in, double tolerance, int maxSteps, const std::string& method,
                             bool keepFailed, const py::object& progress) {
@@ -278,6 +273,11 @@ void writeRemesh(const RemeshResult& r, const std::string& path, const py::objec
 }
 
 }  // namespace
+
+void verifyOrRaise(const refine::OutputVerification& check, bool keepFailed, nlohmann::json& report) {
+  report["verification"] = refine::verificationJson(check);
+  if (!check.passed() && !keepFailed) throw VerificationFailed(check.message() + " (keep_failed=True returns it)");
+}
 
 void bindPipelines(py::module_& m) {
   py::class_<UniformizeResult>(m, "UniformizeResult", "What conformesh.uniformize returns.")

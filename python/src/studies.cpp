@@ -41,6 +41,7 @@ ConvergenceResult convergence(const Metric& metric, const std::vector<int>& vert
   if (!invalid.empty()) inputError("convergence: " + invalid);
   CallGuard guard(progress);
   o.progress = guard.lineCallback();
+  o.measure.progress = guard.countCallback("curvature measure");
   o.remesh.refinement.progressEvery = 2000;
   o.remesh.refinement.progress = [&guard](const refine::RefineProgress& p) {
     guard.step("refining: " + std::to_string(p.vertices) + " vertices");

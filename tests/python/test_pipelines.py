@@ -182,3 +182,24 @@ def test_keyboard_interrupt_stops_remesh(tmp_path):
     # The whole call takes about 8 s without the check (231k vertices, measured): stopping within 3 s means it
     # stopped between steps, not at the end.
     assert time.perf_counter() - t0 < 3
+
+
+def test_remesh_triangulation_matches_cli(tmp_path, cli, data_dir):
+    """The mesh route's report (refine/pipeline/remesh_json.h's meshRemeshJson) equals `remesh MESHFILE --json`."""
+    path = os.path.join(data_dir, "knot1.off")
+    out = str(tmp_path / "cli.ply")
+    text = subprocess.run([cli, "remesh", path, "--eps", "0.5", "-o", out, "--json"], check=True,
+                          capture_output=True, text=True).stdout
+    expected = json.loads(text)
+    r = conformesh.remesh(conformesh.read(path), 0.5)
+
+    def strip(d):
+        if isinstance(d, dict):
+            return {k: strip(v) for k, v in d.items() if k not in ("seconds", "output", "written")}
+        return d
+
+    assert strip(r.report) == strip(expected)
+    mine = str(tmp_path / "py.ply")
+    r.write(mine)
+    with open(out, "rb") as a, open(mine, "rb") as b:
+        assert a.read() == b.read()

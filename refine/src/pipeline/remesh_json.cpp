@@ -137,6 +137,51 @@ nlohmann::json uniformizedJson(const intrinsic::Uniformization& u) {
   return j;
 }
 
+nlohmann::json refineJson(const RefineResult& r, const intrinsic::IntrinsicTriangulation& input,
+                          const RefineOptions& o, const QualityReport& q, double seconds) {
+  const RefineStatistics& s = r.statistics;
+  return {{"background", intrinsic::toString(input.background)},
+          {"epsilon", o.epsilon},
+          {"ratio_bound", o.ratioBound},
+          {"graded", !o.lambda.empty()},
+          {"seconds", seconds},
+          {"statistics",
+           {{"input_vertices", s.inputVertices},
+            {"circumcenter_insertions", s.circumcenterInsertions},
+            {"centroid_insertions", s.centroidInsertions},
+            {"off_center_insertions", s.offCenterInsertions},
+            {"boundary_splits", s.boundarySplits},
+            {"rejected_circumcenters", s.rejectedCircumcenters},
+            {"segment_rule", segmentRuleName(o.segmentRule)},
+            {"deleted_vertices", s.deletedVertices},
+            {"refused_deletions", s.refusedDeletions},
+            {"flips", s.flips},
+            {"trace_steps", s.traceSteps},
+            {"boundary_loops", s.boundaryLoops},
+            {"circle_loops", s.circleLoops},
+            {"smoothing_passes", o.smoothingPasses},
+            {"smoothing_moves", s.smoothingMoves},
+            {"smoothing_refused", s.smoothingRefused},
+            {"insertions_after_smoothing", s.insertionsAfterSmoothing}}},
+          {"quality", qualityJson(q)}};
+}
+
+nlohmann::json embeddingJson(const embedding::EmbeddingResult& fit, const intrinsic::IntrinsicTriangulation& input) {
+  return {{"vertices", input.mesh.nVertices()},
+          {"edges", input.mesh.nEdges()},
+          {"start", fit.start},
+          {"tolerance", fit.tolerance},
+          {"isometric", fit.isometric},
+          {"max_relative_residual", fit.maxRelativeResidual},
+          {"rms_relative_residual", fit.rmsRelativeResidual},
+          {"worst_edge", fit.worstEdge},
+          {"regularized_iterations", fit.regularizedIterations},
+          {"iterations", fit.iterations},
+          {"start_seconds", fit.startSeconds},
+          {"fit_seconds", fit.fitSeconds},
+          {"verdict", fit.verdict}};
+}
+
 nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMetric& metric,
                                 const RemeshOptions& o) {
   return {{"metric", metric.description()},

@@ -1,6 +1,6 @@
-// remesh_output.cpp — both pipelines' results as file data: MeshData for PLY/OFF/OBJ (faces, edge lengths, per-vertex
-// properties, comments naming the source and ε) and VtkMesh for ParaView. Declared in metric_remesh.h and
-// mesh_remesh.h; reads results only.
+// remesh_output.cpp — both pipelines' results, and a refinement's, as file data: MeshData for PLY/OFF/OBJ (faces, edge
+// lengths, per-vertex properties, comments naming the source and ε) and VtkMesh for ParaView. Declared in
+// metric_remesh.h, mesh_remesh.h and refinement_output.h; reads results only.
 #include <cstdio>
 #include <string>
 
@@ -8,10 +8,39 @@
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
+#include "conformesh/refine/pipeline/refinement_output.h"
+#include "conformesh/refine/trace/input_location.h"
 
 namespace conformesh::refine {
 
 using namespace conformesh::intrinsic;
+
+// === a refinement (refinement_output.h)
+
+MeshData refinementMeshData(const RefineResult& r, const IntrinsicTriangulation& input,
+                            const std::vector<Eigen::Vector3d>& inputPositions, bool graded) {
+  MeshData out = fromTriangulation(r.triangulation);
+  const int n = r.triangulation.mesh.nVertices();
+  std::vector<double> face(n), b0(n), b1(n), b2(n);
+  for (int v = 0; v < n; ++v) {
+    face[v] = r.locations[v].face;
+    b0[v] = r.locations[v].bary[0];
+    b1[v] = r.locations[v].bary[1];
+    b2[v] = r.locations[v].bary[2];
+  }
+  out.vertexProperties["input_face"] = std::move(face);
+  out.vertexProperties["input_b0"] = std::move(b0);
+  out.vertexProperties["input_b1"] = std::move(b1);
+  out.vertexProperties["input_b2"] = std::move(b2);
+  if (graded) out.vertexProperties["lambda"] = r.lambda;
+  if (input.background == Background::Euclidean && !inputPositions.empty()) {
+    if (static_cast<int>(inputPositions.size()) != input.mesh.nVertices())
+      throw InputError("refinementMeshData: " + std::to_string(inputPositions.size()) + " positions for an input of " +
+                       std::to_string(input.mesh.nVertices()) + " vertices");
+    out.positions = interpolatePositions(input.mesh, inputPositions, r.locations);
+  }
+  return out;
+}
 
 // === the smooth-metric pipeline
 

@@ -15,6 +15,7 @@
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
 #include "conformesh/refine/pipeline/output_verification.h"
+#include "conformesh/refine/pipeline/refinement_output.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/pipeline/sweep_case.h"
 #include "conformesh/refine/pipeline/sweep_run.h"

@@ -1,10 +1,11 @@
-// remesh_json.h — the library's reports as the JSON dicts that `conformesh remesh --json` (and refine, convergence)
-// print: one definition shared by the commands, `conformesh sweep`'s records and the Python module's `.report`.
+// remesh_json.h — the library's reports as the JSON dicts that `conformesh remesh --json` (and info, uniformize,
+// refine, embed, convergence) print: one definition shared by the commands, `conformesh sweep`'s records and the Python module's `.report`.
 // No files, no global state.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
+#include "conformesh/embedding/fit/isometric_embedding.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/mesh/mesh_summary.h"
@@ -20,7 +21,6 @@ namespace conformesh::refine {
 nlohmann::json qualityJson(const QualityReport& q);
 nlohmann::json uniformizationJson(const intrinsic::UniformizationReport& u);
 nlohmann::json refineStatisticsJson(const RefineStatistics& s);
-// Summary figures and the histogram; per-vertex values are left to the output files.
 // What reading a mesh file did (mesh_data.h ConversionReport): reoriented_faces, unreferenced_vertices_removed,
 // polygons_fan_triangulated, tristrip_triangles, lengths_from ("positions" or "edge element").
 nlohmann::json readingJson(const intrinsic::ConversionReport& reading);
@@ -29,8 +29,18 @@ nlohmann::json readingJson(const intrinsic::ConversionReport& reading);
 // command adds the name it wrote ("written").
 nlohmann::json verificationJson(const OutputVerification& check);
 
+// Summary figures and the histogram; per-vertex values are left to the output files.
 nlohmann::json curvatureMeasureJson(const intrinsic::CurvatureMeasureResult& c,
                                     const intrinsic::CurvatureMeasureOptions& o);
+
+// The dict of `refine --json` without the file names: background, epsilon, ratio_bound, graded (a conformal factor
+// was given), seconds (the caller's wall clock of refineDelaunay), statistics (with the options' segment rule and
+// smoothing passes), quality (`q`, measureQuality of the output).
+nlohmann::json refineJson(const RefineResult& r, const intrinsic::IntrinsicTriangulation& input,
+                          const RefineOptions& options, const QualityReport& q, double seconds);
+// The dict of `embed --json` without the file names: vertices, edges, start, tolerance, isometric, residuals, worst
+// edge, iterations, seconds, verdict.
+nlohmann::json embeddingJson(const embedding::EmbeddingResult& fit, const intrinsic::IntrinsicTriangulation& input);
 
 // The dict of `info --json` without what depends on how the file was read (file, reoriented_faces,
 // unreferenced_vertices_removed, lengths_from): topology, curvature totals, angle and length ranges, Delaunay-ness.
