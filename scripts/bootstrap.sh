@@ -36,7 +36,12 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONFORMESH_BUILD_PYTHON=ON
-cmake --build "$build" -j "$jobs"
+# `run` builds what the main job needs (the libraries and the conformesh command); `test` builds everything.
+if [ "$mode" = run ]; then
+  cmake --build "$build" -j "$jobs" --target conformesh
+else
+  cmake --build "$build" -j "$jobs"
+fi
 
 case "$mode" in
   run)
@@ -46,6 +51,8 @@ case "$mode" in
     # intrinsically with the curvature-convergence check (conformesh remesh --help explains every figure).
     "$build/apps/conformesh" remesh kerr-newman --param a=0.99 --eps 0.05 -o "$out/kerr-a0.99.ply" \
       --vtk "$out/kerr-a0.99.vtk"
+    echo "bootstrap: wrote $out/kerr-a0.99.ply (the mesh: triangles and edge lengths in the Kerr metric) and"
+    echo "  $out/kerr-a0.99.vtk (for ParaView, drawn on its uniformization sphere); next: README.md, docs/quickstart.md"
     ;;
   test)
     cd "$build"

@@ -5,7 +5,7 @@ A worked example is a ```console block: lines starting with "$ " are commands (a
 the lines after a command up to the next "$ " are what it prints (stdout and stderr, as a terminal shows them). Every block of one page runs in order in
 one scratch folder, so a later block may use the files an earlier one wrote (docs/cli.md's `uniformize kerr-t0.ply`
 reads what `discretize` wrote). `conformesh` is the build's binary, `python3` the interpreter CMake found,
-`scripts/` the source tree's, `build/tests/data/meshes/` and bare mesh names (`blade.off`) the test data folder's.
+`scripts/` and `docs/` the source tree's, `build/tests/data/meshes/` and bare mesh names (`blade.off`) the test data folder's.
 `$ cat FILE` of a file that does not exist yet writes the shown text to FILE (the docs show an input that way).
 
 Compared as printed, except wall-clock figures: a number followed by " s" and every number on a line that starts
@@ -95,6 +95,7 @@ def scratch_folder(args):
     os.symlink(args.python, os.path.join(bin_dir, "python3"))
     source = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     os.symlink(os.path.join(source, "scripts"), os.path.join(work, "scripts"))
+    os.symlink(os.path.join(source, "docs"), os.path.join(work, "docs"))
     os.makedirs(os.path.join(work, "build", "tests", "data"))
     os.makedirs(os.path.join(work, "build", "apps"))
     os.symlink(os.path.abspath(args.conformesh), os.path.join(work, "build", "apps", "conformesh"))
