@@ -71,6 +71,8 @@ TEST_CASE("remesh: closed surfaces of genus 0 and 1, and disks") {
     // K·A_f·(a² + b² + c²)/24 + O(ε⁴) (the spherical/hyperbolic excess expansion), and a² + b² + c² ≤ 9R² ≤ 9ε² for
     // circumradius R ≤ ε. Boundary chords cut off circular segments of area k_g ℓ³/12 ≤ k_g ε² ℓ/3 (ℓ ≤ 2ε). So
     // |A_mesh − A| ≤ ε² (3/8 ∫|K| dA + 1/3 ∫|k_g| ds), held with a factor 1.2 for the O(ε⁴) terms and R ≤ 1.05ε.
+    // (The written lengths are of chart-straight curves, longer than geodesics by a further O(ℓ³) each; measured
+    // errors are 0.05–0.55 of this bound, so it holds that term too on these charts: a measured margin, not derived.)
     const double area = metricArea(m).value;
     const double areaBound = 1.2 * c.eps * c.eps * (0.375 * c.absCurvature + c.absBoundary / 3);
     INFO("area error " << totalArea(r.mesh) - area << ", bound " << areaBound << " (former 2 %: " << 0.02 * area << ")");
