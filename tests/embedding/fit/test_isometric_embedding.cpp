@@ -69,7 +69,7 @@ TEST_CASE("given the true positions as a start, a realizable mesh stays where it
 TEST_CASE("ellipsoid meshes fitted without their positions: isometric, Procrustes error shrinking with ε") {
   const auto m = makeMetric("ellipsoid", {{"f", 0.3}});
   std::vector<double> h, procrustes;
-  for (double eps : {0.3, 0.16, 0.09}) {
+  for (double eps : {0.2, 0.13, 0.09, 0.06, 0.045}) {
     refine::RemeshOptions ro;
     ro.epsilon = eps;
     ro.t0Resolution = 4;
@@ -88,11 +88,10 @@ TEST_CASE("ellipsoid meshes fitted without their positions: isometric, Procruste
   }
   // The fitted polyhedron has the curve lengths of the surface as straight edges, so it bulges out of the surface by
   // O(ε²) — the Procrustes error is that gap, not a fitting error.
-  CHECK(procrustes[1] < procrustes[0]);
-  CHECK(procrustes[2] < procrustes[1]);
+  for (std::size_t i = 1; i < procrustes.size(); ++i) CHECK(procrustes[i] < procrustes[i - 1]);
   const double order = intrinsic::fitLogLogSlope(h, procrustes);
   WARN("order of the Procrustes RMS error against the mean circumradius: " << order);
-  CHECK(order > 1.5);
+  CHECK(order >= 1.8);
 }
 
 TEST_CASE("Kerr horizon: a/M = 0.5 embeds to round-off, a/M = 0.99 leaves a residual no fit removes") {

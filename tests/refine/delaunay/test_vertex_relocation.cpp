@@ -12,6 +12,7 @@
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/vertex_relocation.h"
 #include "support/refine_test_surfaces.h"
+#include "support/gauss_bonnet_bound.h"
 
 using namespace conformesh;
 using namespace conformesh::refine;
@@ -86,7 +87,7 @@ void checkIntrinsic(const IntrinsicTriangulation& in, const RefineResult& r, con
   double worst = 0;
   for (size_t v = 0; v < sums.size(); ++v) worst = std::max(worst, std::abs(now[v] - sums[v]));
   CHECK(worst < 1e-9);
-  CHECK(std::abs(intrinsic::curvatureTotals(t).gaussBonnetResidual) < 1e-9);
+  CHECK(std::abs(intrinsic::curvatureTotals(t).gaussBonnetResidual) <= conformesh::testing::gaussBonnetRoundoff(t.mesh.nFaces()));
   // Closed surfaces: moving a vertex inside its star keeps the star's union, so the area is unchanged.
   CHECK(intrinsic::totalArea(t) == Approx(intrinsic::totalArea(in)).epsilon(1e-11));
 }

@@ -8,6 +8,8 @@
 // sweeps of docs/studies.md (no theorem bounds the mean smallest angle above the refinement's 20.7°), not derived.
 #include <catch2/catch.hpp>
 
+#include "support/gauss_bonnet_bound.h"
+
 #include <cmath>
 
 #include "conformesh/intrinsic/metric/metric_registry.h"
@@ -37,7 +39,7 @@ TEST_CASE("convergence sweeps on the ellipsoid and the Kerr horizon at a/M = 0.9
       CHECK(L.quality.meanMinAngleDeg >= kRegressionMeanMinAngleDeg);
       meanOfMeans += L.quality.meanMinAngleDeg / s.levels.size();
       CHECK(L.invertedTriangles == 0);
-      CHECK(std::abs(L.quality.gaussBonnetResidual) < 1e-9);
+      CHECK(std::abs(L.quality.gaussBonnetResidual) <= conformesh::testing::gaussBonnetRoundoff(L.quality.triangles));
     }
     const double kRegressionSweepMeanDeg = 46.5;  // the paper's figure, met by docs/studies.md's sweeps
     CHECK(meanOfMeans >= kRegressionSweepMeanDeg);

@@ -4,6 +4,8 @@
 // the Gaussian curvature measure converging at first order (paper Theorem 3.4) over three coarse sizes.
 #include <catch2/catch.hpp>
 
+#include "support/gauss_bonnet_bound.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -36,7 +38,7 @@ TEST_CASE("horizon remesh: Kerr horizons in Kerr-Schild coordinates, Gauss-Bonne
         const RemeshResult r = remeshMetric(m, o);
         REQUIRE(r.invertedTriangles == 0);
         CHECK(r.mesh.mesh.eulerCharacteristic() == 2);
-        CHECK(std::abs(curvatureTotals(r.mesh).gaussBonnetResidual) < 1e-9);
+        CHECK(std::abs(curvatureTotals(r.mesh).gaussBonnetResidual) <= conformesh::testing::gaussBonnetRoundoff(r.mesh.mesh.nFaces()));
         // Chords for arcs: the mesh area is below the smooth one by O(ε²/R²) < 1 % at ε = 0.12, R ≈ 1.8.
         CHECK(std::abs(totalArea(r.mesh) - 8 * M_PI * rp) < 0.03 * 8 * M_PI * rp);
         CHECK(r.quality.minAngleDeg >= 20.7);

@@ -3,6 +3,8 @@
 // the smooth area), its circumradii respect ε, and its angles, measured with its own lengths, respect the shape bound.
 #include <catch2/catch.hpp>
 
+#include "support/gauss_bonnet_bound.h"
+
 #include <cmath>
 #include <memory>
 
@@ -20,6 +22,20 @@ using namespace conformesh::intrinsic;
 using namespace conformesh::refine;
 
 namespace {
+// ∫|K| dA over the Kerr horizon (Q = 0, Smarr 1973): K = (r₊² + a²)(r₊² − 3a² cos²θ)/(r₊² + a² cos²θ)³ with
+// dA = (r₊² + a²) sin θ dθ dφ, by the midpoint rule in x = cos θ on 20000 cells (error ~1e-8 relative, the kinks of
+// |K| included).
+double kerrAbsCurvature(double M, double a) {
+  const double rp = M + std::sqrt(M * M - a * a), s = rp * rp + a * a;
+  const int n = 20000;
+  double sum = 0;
+  for (int i = 0; i < n; ++i) {
+    const double x = -1 + (i + 0.5) * 2.0 / n, q = rp * rp + a * a * x * x;
+    sum += std::abs(s * (rp * rp - 3 * a * a * x * x) / (q * q * q)) * s;
+  }
+  return 2 * M_PI * sum * 2.0 / n;
+}
+
 RemeshResult run(const SmoothMetric& m, double eps, int t0 = 10) {
   RemeshOptions o;
   o.epsilon = eps;
@@ -32,12 +48,16 @@ TEST_CASE("remesh: closed surfaces of genus 0 and 1, and disks") {
   struct Case {
     std::unique_ptr<SmoothMetric> metric;
     double eps;
+    double absCurvature;  // ∫|K| dA, closed form
+    double absBoundary;   // ∫|k_g| ds, closed form
   };
   std::vector<Case> cases;
-  cases.push_back({makeMetric("ellipsoid", {{"f", 0.3}}), 0.04});
-  cases.push_back({makeMetric("kerr-newman", {{"a", 0.99}}), 0.08});
-  cases.push_back({makeMetric("torus", {{"R", 1.0}, {"r", 0.4}}), 0.04});
-  cases.push_back({makeMetric("spherical-cap", {}), 0.05});
+  // Ellipsoid: K > 0, so ∫|K| = ∫K = 4π. Torus (1, 0.4): ∫K = +4π on the outer half and −4π on the inner one.
+  // Spherical cap R = 1, α = 1: K = 1 on area 2π(1 − cos α); boundary circle of length 2π sin α, k_g = cot α.
+  cases.push_back({makeMetric("ellipsoid", {{"f", 0.3}}), 0.04, 4 * M_PI, 0});
+  cases.push_back({makeMetric("kerr-newman", {{"a", 0.99}}), 0.08, kerrAbsCurvature(1.0, 0.99), 0});
+  cases.push_back({makeMetric("torus", {{"R", 1.0}, {"r", 0.4}}), 0.04, 8 * M_PI, 0});
+  cases.push_back({makeMetric("spherical-cap", {}), 0.05, 2 * M_PI * (1 - std::cos(1.0)), 2 * M_PI * std::cos(1.0)});
   for (const Case& c : cases) {
     const SmoothMetric& m = *c.metric;
     INFO(m.description());
@@ -46,10 +66,17 @@ TEST_CASE("remesh: closed surfaces of genus 0 and 1, and disks") {
     CHECK(r.mesh.mesh.eulerCharacteristic() == chi);
     CHECK(r.invertedTriangles == 0);
     // Gauss–Bonnet with the output's own lengths: Σ deficits + Σ turning = 2πχ.
-    CHECK(std::abs(curvatureTotals(r.mesh).gaussBonnetResidual) < 1e-9);
-    // Lengths are the metric's: the mesh area is the smooth area up to the O(ε²) of chords against arcs.
+    CHECK(std::abs(curvatureTotals(r.mesh).gaussBonnetResidual) <= conformesh::testing::gaussBonnetRoundoff(r.mesh.mesh.nFaces()));
+    // Lengths are the metric's, so each flat face is the comparison triangle of a geodesic one: their areas differ by
+    // K·A_f·(a² + b² + c²)/24 + O(ε⁴) (the spherical/hyperbolic excess expansion), and a² + b² + c² ≤ 9R² ≤ 9ε² for
+    // circumradius R ≤ ε. Boundary chords cut off circular segments of area k_g ℓ³/12 ≤ k_g ε² ℓ/3 (ℓ ≤ 2ε). So
+    // |A_mesh − A| ≤ ε² (3/8 ∫|K| dA + 1/3 ∫|k_g| ds), held with a factor 1.2 for the O(ε⁴) terms and R ≤ 1.05ε.
+    // (The written lengths are of chart-straight curves, longer than geodesics by a further O(ℓ³) each; measured
+    // errors are 0.05–0.55 of this bound, so it holds that term too on these charts: a measured margin, not derived.)
     const double area = metricArea(m).value;
-    CHECK(std::abs(totalArea(r.mesh) - area) < 0.02 * area);
+    const double areaBound = 1.2 * c.eps * c.eps * (0.375 * c.absCurvature + c.absBoundary / 3);
+    INFO("area error " << totalArea(r.mesh) - area << ", bound " << areaBound << " (former 2 %: " << 0.02 * area << ")");
+    CHECK(std::abs(totalArea(r.mesh) - area) <= areaBound);
     // Quality in the original metric: the refinement's 20.7° bound survives the pull-back.
     CHECK(r.quality.minAngleDeg >= 20.7);
     CHECK(r.quality.meanMinAngleDeg >= 40);
@@ -65,7 +92,11 @@ TEST_CASE("remesh: the conformal factor grades the mesh so that circumradii are 
   const double eps = 0.1;
   const RemeshResult r = run(*m, eps);
   for (double l : r.lambda) CHECK(l == Approx(std::log(2.0)).margin(1.7e-3));
-  CHECK(r.quality.maxCircumradius <= 1.05 * eps);
+  // The pull-back of ε·e^(−λ): λ varies by at most 1.7e-3 over a face (above), and circumradii from arc lengths exceed
+  // those from chords by the arcs' θ²/24 ≤ (ε/r₊)²/6 = 4.2e-4 relative (edges ≤ 2ε on the sphere of radius 2): the
+  // bound ε·(1 + 1.7e-3 + 4.2e-4), held at 1 + 2.5e-3 (the former 5 % was twenty times looser).
+  INFO("max circumradius / eps " << r.quality.maxCircumradius / eps);
+  CHECK(r.quality.maxCircumradius <= (1 + 2.5e-3) * eps);
   CHECK(r.quality.meanCircumradius > 0.5 * eps);
 }
 
@@ -78,7 +109,7 @@ TEST_CASE("remesh: a Bezier patch with corners keeps its boundary and meets the 
   REQUIRE(r.diskTarget == DiskTarget::KeepBoundary);
   CHECK(r.uniformization.target == UniformizationTarget::FlatKeepBoundary);
   CHECK(r.invertedTriangles == 0);
-  CHECK(std::abs(curvatureTotals(r.mesh).gaussBonnetResidual) < 1e-9);
+  CHECK(std::abs(curvatureTotals(r.mesh).gaussBonnetResidual) <= conformesh::testing::gaussBonnetRoundoff(r.mesh.mesh.nFaces()));
   // Ruppert's bound arcsin(1/(2√2)) = 20.7° with B = √2, in the ORIGINAL metric (the output's own lengths).
   CHECK(r.quality.minAngleDeg >= 20.7);
   CHECK(r.quality.meanMinAngleDeg >= 40);
