@@ -71,7 +71,7 @@ def normalize_lines(lines):
         if line.rstrip().endswith(" sec"):
             timed = True
         elif timed and re.match(r"\s*\d", line):
-            line = re.sub(r"\S+\s*$", "#", line)
+            line = re.sub(r"\s*\S+\s*$", " #", line)
         else:
             timed = False
         out.append(normalize(line))
