@@ -662,9 +662,11 @@ class PatchSweep {
         const Lanes& dx = s.dist[x];
         Lanes& dy = s.dist[y];
         double best = INFINITY;
-        for (int c = 0; c < kLanes; ++c) {
+        for (int c = 0; c < kLanes; ++c) {  // branch-free, so that the lanes vectorize
           const double d = dx[c] + len;
-          if (d <= reach_ && d < dy[c]) dy[c] = d, best = std::min(best, d);
+          const bool better = d <= reach_ && d < dy[c];
+          dy[c] = better ? d : dy[c];
+          best = better && d < best ? d : best;
         }
         if (best < INFINITY) enqueue(y, best, s);
       }
