@@ -103,6 +103,7 @@ void addFieldOption(CLI::App* sub, std::string& field) {
 }
 
 void addCurvatureMeasureProperties(intrinsic::MeshData& data, const intrinsic::CurvatureMeasureResult& c) {
+  if (!c.centres.empty()) return;  // sampled check: no value at most vertices, so no per-vertex fields
   std::vector<double> error(c.discrete.size());
   for (std::size_t v = 0; v < error.size(); ++v) error[v] = c.discrete[v] - c.smooth[v];
   data.vertexProperties["error"] = std::move(error);

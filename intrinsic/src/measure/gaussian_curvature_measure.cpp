@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -266,32 +267,7 @@ struct MeasureContext {
     for (int x : reached) {
       if (distanceOf(x) >= r) continue;
       out.discrete += atom[x];
-      if (boundaryTerms && m.isBoundaryVertex(x)) {
-        out.smooth += turning[x];
-        out.absoluteScale += std::abs(turning[x]);
-        // The boundary edges with an end inside: the outgoing one always, the incoming one when its tail is outside
-        // (else it is counted from there). The part inside is where the linearly interpolated d is below r, cut at
-        // the same parameter as the triangle it bounds.
-        const int hOut = m.vertexHalfedge(x);
-        int h = hOut;
-        for (int n = m.nextOutgoing(h); n != kInvalid; n = m.nextOutgoing(n)) h = n;
-        const int hIn = HalfedgeMesh::prev(h);
-        for (int e : {hOut, hIn}) {
-          const double d0 = distanceOf(m.tail(e)), d1 = distanceOf(m.tip(e));
-          if (e == hIn && d0 < r) continue;
-          SignedIntegral k;
-          if (d0 < r && d1 < r) {
-            k = edgeKg[e];
-          } else {
-            const double t = (r - d0) / (d1 - d0);
-            const double side = face[HalfedgeMesh::face(e)].orientation;
-            k = d0 < r ? segmentCurvature(metric, domain, ref[m.tail(e)], segment(e), side, 0, t)
-                       : segmentCurvature(metric, domain, ref[m.tail(e)], segment(e), side, t, 1);
-          }
-          out.smooth += k.value;
-          out.absoluteScale += k.absValue;
-        }
-      }
+      if (boundaryTerms && m.isBoundaryVertex(x)) addBoundaryAtoms(x, distanceOf, r, out);
     }
     for (int x : reached) {
       if (distanceOf(x) >= r) continue;
@@ -301,36 +277,72 @@ struct MeasureContext {
         faceStamp[f] = stamp;
         const double d[3] = {distanceOf(m.faceVertex(f, 0)), distanceOf(m.faceVertex(f, 1)),
                              distanceOf(m.faceVertex(f, 2))};
-        int inside = 0;
-        for (double dk : d) inside += dk < r;
-        if (inside == 3) {
-          out.smooth += face[f].integral;
-          out.absoluteScale += face[f].absIntegral;
-          continue;
-        }
-        // The rim d = r cuts the triangle (d interpolated linearly): integrate the face's quadratic density over the
-        // part inside, one or two sub-triangles in the face's (s, t) = (b1, b2) coordinates.
-        const Eigen::Vector2d corner[3] = {{0, 0}, {1, 0}, {0, 1}};
-        auto cut = [&](int i, int j, double& t) {  // the rim's crossing of edge i → j, i inside, j outside
-          t = (r - d[i]) / (d[j] - d[i]);
-          return Eigen::Vector2d((1 - t) * corner[i] + t * corner[j]);
-        };
-        double fraction = 0, ti = 0, tj = 0;
-        if (inside == 1) {
-          const int i = d[0] < r ? 0 : (d[1] < r ? 1 : 2), j = (i + 1) % 3, k = (i + 2) % 3;
-          const Eigen::Vector2d pj = cut(i, j, ti), pk = cut(i, k, tj);
-          out.smooth += face[f].over(corner[i], pj, pk);
-          fraction = ti * tj;
-        } else {
-          const int o = d[0] >= r ? 0 : (d[1] >= r ? 1 : 2), i = (o + 1) % 3, j = (o + 2) % 3;
-          const Eigen::Vector2d pi = cut(i, o, ti), pj = cut(j, o, tj);
-          out.smooth += face[f].over(corner[i], corner[j], pj) + face[f].over(corner[i], pj, pi);
-          fraction = 1 - (1 - ti) * (1 - tj);
-        }
-        out.absoluteScale += fraction * face[f].absIntegral;
+        addFace(f, d, r, out);
       }
     }
     return out;
+  }
+
+  // The smooth atoms of boundary vertex x (inside {d < r}): its turning, and the parts inside of the boundary edges
+  // with an end at x — the outgoing one always, the incoming one when its tail is outside (else it is counted from
+  // there). The part inside is where the linearly interpolated d is below r, cut at the same parameter as the triangle
+  // it bounds.
+  template <class Distance>
+  void addBoundaryAtoms(int x, const Distance& distanceOf, double r, RegionCurvatureMeasure& out) const {
+    out.smooth += turning[x];
+    out.absoluteScale += std::abs(turning[x]);
+    const int hOut = m.vertexHalfedge(x);
+    int h = hOut;
+    for (int n = m.nextOutgoing(h); n != kInvalid; n = m.nextOutgoing(n)) h = n;
+    const int hIn = HalfedgeMesh::prev(h);
+    for (int e : {hOut, hIn}) {
+      const double d0 = distanceOf(m.tail(e)), d1 = distanceOf(m.tip(e));
+      if (e == hIn && d0 < r) continue;
+      SignedIntegral k;
+      if (d0 < r && d1 < r) {
+        k = edgeKg[e];
+      } else {
+        const double t = (r - d0) / (d1 - d0);
+        const double side = face[HalfedgeMesh::face(e)].orientation;
+        k = d0 < r ? segmentCurvature(metric, domain, ref[m.tail(e)], segment(e), side, 0, t)
+                   : segmentCurvature(metric, domain, ref[m.tail(e)], segment(e), side, t, 1);
+      }
+      out.smooth += k.value;
+      out.absoluteScale += k.absValue;
+    }
+  }
+
+  // Face f's share of {d < r}, d[k] the level at its k-th vertex: nothing when no vertex is inside, its whole ∫K dA and
+  // ∫|K| dA when all three are, else the part the rim d = r (d interpolated linearly) leaves inside.
+  void addFace(int f, const double d[3], double r, RegionCurvatureMeasure& out) const {
+    int inside = 0;
+    for (int k = 0; k < 3; ++k) inside += d[k] < r;
+    if (inside == 0) return;
+    if (inside == 3) {
+      out.smooth += face[f].integral;
+      out.absoluteScale += face[f].absIntegral;
+      return;
+    }
+    // The rim cuts the triangle: integrate the face's quadratic density over the part inside, one or two
+    // sub-triangles in the face's (s, t) = (b1, b2) coordinates.
+    const Eigen::Vector2d corner[3] = {{0, 0}, {1, 0}, {0, 1}};
+    auto cut = [&](int i, int j, double& t) {  // the rim's crossing of edge i → j, i inside, j outside
+      t = (r - d[i]) / (d[j] - d[i]);
+      return Eigen::Vector2d((1 - t) * corner[i] + t * corner[j]);
+    };
+    double fraction = 0, ti = 0, tj = 0;
+    if (inside == 1) {
+      const int i = d[0] < r ? 0 : (d[1] < r ? 1 : 2), j = (i + 1) % 3, k = (i + 2) % 3;
+      const Eigen::Vector2d pj = cut(i, j, ti), pk = cut(i, k, tj);
+      out.smooth += face[f].over(corner[i], pj, pk);
+      fraction = ti * tj;
+    } else {
+      const int o = d[0] >= r ? 0 : (d[1] >= r ? 1 : 2), i = (o + 1) % 3, j = (o + 2) % 3;
+      const Eigen::Vector2d pi = cut(i, o, ti), pj = cut(j, o, tj);
+      out.smooth += face[f].over(corner[i], corner[j], pj) + face[f].over(corner[i], pj, pi);
+      fraction = 1 - (1 - ti) * (1 - tj);
+    }
+    out.absoluteScale += fraction * face[f].absIntegral;
   }
 
   // Theorem 3.4's region: the relative interior (in M) of the union of the triangles whose three vertices are within
@@ -370,6 +382,33 @@ struct MeasureContext {
   }
 };
 
+// The neighbours of every vertex in the order the halfedge fan walk relaxes them (the tip of each outgoing halfedge,
+// and at a boundary fan's end the tail of the incoming boundary halfedge), with their edge lengths:
+// list[start[x], start[x+1]).
+struct Neighbours {
+  std::vector<int> start;
+  std::vector<std::pair<int, double>> list;
+};
+Neighbours flattenNeighbours(const IntrinsicTriangulation& mesh) {
+  const HalfedgeMesh& m = mesh.mesh;
+  const int nV = m.nVertices();
+  Neighbours n;
+  n.start.assign(nV + 1, 0);
+  n.list.reserve(m.nHalfedges() + nV);
+  for (int x = 0; x < nV; ++x) {
+    const int start = m.vertexHalfedge(x);
+    int h = start;
+    do {
+      n.list.push_back({m.tip(h), mesh.length(h)});
+      const int hp = HalfedgeMesh::prev(h);
+      if (m.twin(hp) == kInvalid) n.list.push_back({m.tail(hp), mesh.length(hp)});
+      h = m.nextOutgoing(h);
+    } while (h != kInvalid && h != start);
+    n.start[x + 1] = static_cast<int>(n.list.size());
+  }
+  return n;
+}
+
 // The balls of gaussianCurvatureMeasure, one per vertex: Dijkstra from the centre over the graph of edges, cut at
 // reach = r + the longest edge (so that every triangle the rim cuts has all three distances), then the region's two
 // measures. Each ball costs its size, a fixed fraction of the vertices, so all n of them cost O(n²) (docs/benchmarks.md);
@@ -382,22 +421,26 @@ class BallSweep {
   BallSweep(const MeasureContext& ctx, const IntrinsicTriangulation& mesh, double radius, MeasureRegion region)
       : ctx_(ctx), m_(mesh.mesh), radius_(radius), region_(region) {
     reach_ = radius + *std::max_element(mesh.edgeLengths.begin(), mesh.edgeLengths.end());
-    flattenFans(mesh);
+    const Neighbours n = flattenNeighbours(mesh);
+    adjStart_ = n.start;
+    adj_ = n.list;
   }
 
-  // Fills r.discrete, r.smooth, r.absoluteScale and r.relativeError for every vertex, in blocks of a hundredth of the
-  // vertices (progress after each).
-  void run(CurvatureMeasureResult& r, const std::function<void(int, int)>& progress) const {
-    const int nV = m_.nVertices(), block = (nV + 99) / 100;
-    for (int b0 = 0; b0 < nV; b0 += block) {
-      const int b1 = std::min(nV, b0 + block);
+  // Fills r.discrete, r.smooth, r.absoluteScale and r.relativeError at the (distinct) vertices `centres`, in blocks
+  // of a hundredth of them (progress after each).
+  void run(const std::vector<int>& centres, CurvatureMeasureResult& r,
+           const std::function<void(int, int)>& progress) const {
+    const int n = static_cast<int>(centres.size()), block = (n + 99) / 100;
+    for (int b0 = 0; b0 < n; b0 += block) {
+      const int b1 = std::min(n, b0 + block);
       constexpr int kChunks = 8;
       runChunks(kChunks, [&](int c) {
         std::unique_ptr<Scratch> s = takeScratch();
-        for (int v = b0 + (b1 - b0) * c / kChunks; v < b0 + (b1 - b0) * (c + 1) / kChunks; ++v) measureBall(v, *s, r);
+        for (int i = b0 + (b1 - b0) * c / kChunks; i < b0 + (b1 - b0) * (c + 1) / kChunks; ++i)
+          measureBall(centres[i], *s, r);
         giveScratch(std::move(s));
       });
-      if (progress) progress(b1, nV);
+      if (progress) progress(b1, n);
     }
   }
 
@@ -408,24 +451,6 @@ class BallSweep {
     std::vector<int> vertexStamp, faceStamp, reached;
     std::vector<std::pair<double, int>> heap;
   };
-
-  // The neighbours of every vertex in the order the halfedge fan walk relaxes them (the tip of each outgoing halfedge,
-  // and at a boundary fan's end the tail of the incoming boundary halfedge), with their edge lengths.
-  void flattenFans(const IntrinsicTriangulation& mesh) {
-    const int nV = m_.nVertices();
-    adjStart_.assign(nV + 1, 0);
-    for (int x = 0; x < nV; ++x) {
-      const int start = m_.vertexHalfedge(x);
-      int h = start;
-      do {
-        adj_.push_back({m_.tip(h), mesh.length(h)});
-        const int hp = HalfedgeMesh::prev(h);
-        if (m_.twin(hp) == kInvalid) adj_.push_back({m_.tail(hp), mesh.length(hp)});
-        h = m_.nextOutgoing(h);
-      } while (h != kInvalid && h != start);
-      adjStart_[x + 1] = static_cast<int>(adj_.size());
-    }
-  }
 
   std::unique_ptr<Scratch> takeScratch() const {
     std::lock_guard<std::mutex> lock(poolMutex_);
@@ -495,6 +520,247 @@ class BallSweep {
   mutable std::vector<std::unique_ptr<Scratch>> pool_;
 };
 
+// The exact all-vertex check, GeodesicBall regions, with the results of BallSweep to round-off (docs/theory.md §5,
+// "Cost"): the centres are grouped into patches of up to kLanes nearby vertices, and one label-correcting Dijkstra per
+// patch carries the kLanes distance fields side by side (a vertex's lanes contiguous), so that the queue's cost is
+// shared by the patch and a relaxation is a loop over lanes. Its distances are BallSweep's bit for bit: both are the
+// least fixed point of d(y) = min_x fl(d(x) + ℓ(xy)) below the reach, i.e. the minimum over edge paths of the
+// floating-point sum taken from the centre. The sums then add the same terms as BallSweep's, in another order: the
+// terms that are inside for every lane (a vertex's atom, a face's whole integral) once into a sum common to the patch,
+// the others lane by lane (the rim annulus). Every patch is independent, so the threads do not change the result.
+class PatchSweep {
+ public:
+  static constexpr int kLanes = 16;
+
+  PatchSweep(const MeasureContext& ctx, const IntrinsicTriangulation& mesh, double radius)
+      : ctx_(ctx), m_(mesh.mesh), radius_(radius), nbr_(flattenNeighbours(mesh)) {
+    reach_ = radius + *std::max_element(mesh.edgeLengths.begin(), mesh.edgeLengths.end());
+    buildPatches();
+  }
+
+  // Fills r.discrete, r.smooth, r.absoluteScale and r.relativeError for every vertex, in blocks of a hundredth of the
+  // patches (progress, counted in centres, after each).
+  void run(CurvatureMeasureResult& r, const std::function<void(int, int)>& progress) const {
+    const int nP = static_cast<int>(patchStart_.size()) - 1, nV = m_.nVertices(), block = (nP + 99) / 100;
+    for (int b0 = 0; b0 < nP; b0 += block) {
+      const int b1 = std::min(nP, b0 + block);
+      constexpr int kChunks = 8;
+      runChunks(kChunks, [&](int c) {
+        std::unique_ptr<Scratch> s = takeScratch();
+        for (int p = b0 + (b1 - b0) * c / kChunks; p < b0 + (b1 - b0) * (c + 1) / kChunks; ++p) measurePatch(p, *s, r);
+        giveScratch(std::move(s));
+      });
+      if (progress) progress(b1 == nP ? nV : patchStart_[b1], nV);
+    }
+  }
+
+ private:
+  using Lanes = std::array<double, kLanes>;
+
+  // Per-thread work arrays of one patch: its vertices by local slot, their lane distances, the queue.
+  struct Scratch {
+    std::vector<int> slotOf, slotStamp, faceStamp;  // global → slot, valid where slotStamp == patch
+    std::vector<int> verts, faces;                  // slot → vertex; the faces touching the region
+    std::vector<Lanes> dist;
+    std::vector<double> lo, hi, pendingKey;  // per slot: min and max over the patch's lanes; queued key
+    std::vector<char> pending;
+    std::vector<std::pair<double, int>> heap;  // (key, slot)
+  };
+
+  // Patches: seeds taken in breadth-first order over the mesh, each grown breadth-first over the vertices not yet in a
+  // patch until it holds kLanes (fewer where they run out), so consecutive patches are neighbours.
+  void buildPatches() {
+    const int nV = m_.nVertices();
+    std::vector<int> order;
+    order.reserve(nV);
+    std::vector<char> seen(nV, 0), taken(nV, 0);
+    for (int s = 0; s < nV; ++s) {
+      if (seen[s]) continue;
+      seen[s] = 1;
+      order.push_back(s);
+      for (size_t q = order.size() - 1; q < order.size(); ++q)
+        for (int k = nbr_.start[order[q]]; k < nbr_.start[order[q] + 1]; ++k) {
+          const int y = nbr_.list[k].first;
+          if (!seen[y]) seen[y] = 1, order.push_back(y);
+        }
+    }
+    std::vector<int> grow;
+    patchStart_.assign(1, 0);
+    for (int seed : order) {
+      if (taken[seed]) continue;
+      grow.assign(1, seed);
+      taken[seed] = 1;
+      for (size_t q = 0; q < grow.size() && static_cast<int>(grow.size()) < kLanes; ++q)
+        for (int k = nbr_.start[grow[q]]; k < nbr_.start[grow[q] + 1] && static_cast<int>(grow.size()) < kLanes; ++k) {
+          const int y = nbr_.list[k].first;
+          if (!taken[y]) taken[y] = 1, grow.push_back(y);
+        }
+      centres_.insert(centres_.end(), grow.begin(), grow.end());
+      patchStart_.push_back(static_cast<int>(centres_.size()));
+    }
+  }
+
+  std::unique_ptr<Scratch> takeScratch() const {
+    std::lock_guard<std::mutex> lock(poolMutex_);
+    if (pool_.empty()) {
+      auto s = std::make_unique<Scratch>();
+      s->slotOf.assign(m_.nVertices(), -1);
+      s->slotStamp.assign(m_.nVertices(), -1);
+      s->faceStamp.assign(m_.nFaces(), -1);
+      return s;
+    }
+    std::unique_ptr<Scratch> s = std::move(pool_.back());
+    pool_.pop_back();
+    return s;
+  }
+  void giveScratch(std::unique_ptr<Scratch> s) const {
+    std::lock_guard<std::mutex> lock(poolMutex_);
+    pool_.push_back(std::move(s));
+  }
+
+  int slot(int x, int patch, Scratch& s) const {
+    if (s.slotStamp[x] == patch) return s.slotOf[x];
+    s.slotStamp[x] = patch;
+    s.slotOf[x] = static_cast<int>(s.verts.size());
+    s.verts.push_back(x);
+    Lanes inf;
+    inf.fill(INFINITY);
+    s.dist.push_back(inf);
+    s.pending.push_back(0);
+    s.pendingKey.push_back(INFINITY);
+    return s.slotOf[x];
+  }
+
+  void enqueue(int y, double key, Scratch& s) const {
+    if (s.pending[y] && s.pendingKey[y] <= key) return;  // it will be relaxed with its current lanes anyway
+    s.pending[y] = 1;
+    s.pendingKey[y] = key;
+    s.heap.push_back({key, y});
+    std::push_heap(s.heap.begin(), s.heap.end(), std::greater<std::pair<double, int>>());
+  }
+
+  // The label-correcting Dijkstra of patch p: a slot is queued at the least of its lanes that improved, and relaxes
+  // all its lanes when popped; it ends when no lane improves, at the least fixed point (the class comment).
+  void grow(int p, Scratch& s) const {
+    s.verts.clear(), s.dist.clear(), s.pending.clear(), s.pendingKey.clear(), s.heap.clear();
+    for (int c = 0; c < patchStart_[p + 1] - patchStart_[p]; ++c) {
+      const int x = slot(centres_[patchStart_[p] + c], p, s);
+      s.dist[x][c] = 0;
+      enqueue(x, 0.0, s);
+    }
+    const auto later = std::greater<std::pair<double, int>>();
+    while (!s.heap.empty()) {
+      std::pop_heap(s.heap.begin(), s.heap.end(), later);
+      const int x = s.heap.back().second;
+      s.heap.pop_back();
+      if (!s.pending[x]) continue;
+      s.pending[x] = 0;
+      const int gx = s.verts[x];
+      for (int k = nbr_.start[gx]; k < nbr_.start[gx + 1]; ++k) {
+        const auto [gy, len] = nbr_.list[k];
+        const int y = slot(gy, p, s);
+        const Lanes& dx = s.dist[x];
+        Lanes& dy = s.dist[y];
+        double best = INFINITY;
+        for (int c = 0; c < kLanes; ++c) {  // branch-free, so that the lanes vectorize
+          const double d = dx[c] + len;
+          const bool better = d <= reach_ && d < dy[c];
+          dy[c] = better ? d : dy[c];
+          best = better && d < best ? d : best;
+        }
+        if (best < INFINITY) enqueue(y, best, s);
+      }
+    }
+    s.lo.resize(s.verts.size());
+    s.hi.resize(s.verts.size());
+    for (size_t x = 0; x < s.verts.size(); ++x) {
+      s.lo[x] = *std::min_element(s.dist[x].begin(), s.dist[x].end());
+      s.hi[x] = *std::max_element(s.dist[x].begin(), s.dist[x].end());
+    }
+  }
+
+  void measurePatch(int p, Scratch& s, CurvatureMeasureResult& r) const {
+    grow(p, s);
+    const int lanes = patchStart_[p + 1] - patchStart_[p];
+    std::array<RegionCurvatureMeasure, kLanes> lane{};
+    RegionCurvatureMeasure common;
+    sumVertices(p, s, lanes, common, lane);
+    sumFaces(p, s, lanes, common, lane);
+    for (int c = 0; c < lanes; ++c) {
+      const int v = centres_[patchStart_[p] + c];
+      const RegionCurvatureMeasure& b = lane[c];
+      r.discrete[v] = common.discrete + b.discrete;
+      r.smooth[v] = common.smooth + b.smooth;
+      r.absoluteScale[v] = common.absoluteScale + b.absoluteScale;
+      r.relativeError[v] =
+          r.absoluteScale[v] > 0 ? (r.discrete[v] - r.smooth[v]) / r.absoluteScale[v] : 0.0;
+    }
+  }
+
+  // The distance of global vertex x in lane c of patch p (infinite where the patch never reached it).
+  double distance(int x, int c, int p, const Scratch& s) const {
+    return s.slotStamp[x] == p ? s.dist[s.slotOf[x]][c] : INFINITY;
+  }
+
+  void sumVertices(int p, Scratch& s, int lanes, RegionCurvatureMeasure& common,
+                   std::array<RegionCurvatureMeasure, kLanes>& lane) const {
+    for (size_t x = 0; x < s.verts.size(); ++x) {
+      if (s.lo[x] >= radius_) continue;
+      const int g = s.verts[x];
+      const bool boundary = ctx_.boundaryTerms && m_.isBoundaryVertex(g);
+      if (s.hi[x] < radius_ && !boundary) {
+        common.discrete += ctx_.atom[g];
+        continue;
+      }
+      for (int c = 0; c < lanes; ++c) {
+        if (s.dist[x][c] >= radius_) continue;
+        lane[c].discrete += ctx_.atom[g];
+        if (boundary) ctx_.addBoundaryAtoms(g, [&](int y) { return distance(y, c, p, s); }, radius_, lane[c]);
+      }
+    }
+  }
+
+  void sumFaces(int p, Scratch& s, int lanes, RegionCurvatureMeasure& common,
+                std::array<RegionCurvatureMeasure, kLanes>& lane) const {
+    s.faces.clear();
+    for (size_t x = 0; x < s.verts.size(); ++x) {
+      if (s.lo[x] >= radius_) continue;
+      const int g = s.verts[x];
+      for (int fk = ctx_.fanStart[g]; fk < ctx_.fanStart[g + 1]; ++fk) {
+        const int f = ctx_.fanFaces[fk];
+        if (s.faceStamp[f] != p) s.faceStamp[f] = p, s.faces.push_back(f);
+      }
+    }
+    for (int f : s.faces) {
+      int sl[3];
+      double hi = 0;
+      for (int k = 0; k < 3; ++k) {
+        const int g = m_.faceVertex(f, k);
+        sl[k] = s.slotStamp[g] == p ? s.slotOf[g] : -1;
+        hi = std::max(hi, sl[k] < 0 ? INFINITY : s.hi[sl[k]]);
+      }
+      if (hi < radius_) {
+        common.smooth += ctx_.face[f].integral;
+        common.absoluteScale += ctx_.face[f].absIntegral;
+        continue;
+      }
+      for (int c = 0; c < lanes; ++c) {
+        double d[3];
+        for (int k = 0; k < 3; ++k) d[k] = sl[k] < 0 ? INFINITY : s.dist[sl[k]][c];
+        ctx_.addFace(f, d, radius_, lane[c]);
+      }
+    }
+  }
+
+  const MeasureContext& ctx_;
+  const HalfedgeMesh& m_;
+  double radius_, reach_ = 0;
+  Neighbours nbr_;
+  std::vector<int> patchStart_, centres_;  // patch p's centres: centres_[patchStart_[p], patchStart_[p+1])
+  mutable std::mutex poolMutex_;
+  mutable std::vector<std::unique_ptr<Scratch>> pool_;
+};
+
 }  // namespace
 
 QuadratureResult integrateOverReferenceTriangle(const SmoothMetric& metric, const ChartFunction& density,
@@ -544,8 +810,69 @@ RegionCurvatureMeasure curvatureMeasureOfSublevelSet(const IntrinsicTriangulatio
 std::string CurvatureMeasureOptions::validate() const {
   if (!(radiusFraction > 0))
     return "curvature measure: the ball radius fraction must be positive, found " + std::to_string(radiusFraction);
+  if (sampleCentres < 0)
+    return "curvature measure: the number of sampled centres must be 0 (every vertex) or positive, found " +
+           std::to_string(sampleCentres);
+  if (histogramBins < 1) return "curvature measure: expected at least one histogram bin, found " + std::to_string(histogramBins);
+  if (!(histogramRange > 0))
+    return "curvature measure: the histogram range must be positive, found " + std::to_string(histogramRange);
   return "";
 }
+
+namespace {
+
+// n distinct vertices of [0, nV) uniformly without replacement, ascending: a partial Fisher–Yates shuffle driven by
+// SplitMix64 (Steele–Lea–Flood 2014), the index the floor of a 53-bit uniform times the range (bias below 2⁻²² for
+// nV < 2³¹), in IEEE arithmetic only, so a seed gives the same centres on every platform.
+std::vector<int> sampleVertices(int nV, int n, unsigned long long seed) {
+  std::vector<int> perm(nV);
+  for (int v = 0; v < nV; ++v) perm[v] = v;
+  std::uint64_t state = seed;
+  auto next = [&state] {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  };
+  for (int i = 0; i < n; ++i) {
+    const double uniform = static_cast<double>(next() >> 11) * 0x1.0p-53;  // in [0, 1), 53 random bits
+    const int j = i + std::min(nV - i - 1, static_cast<int>(uniform * (nV - i)));
+    std::swap(perm[i], perm[j]);
+  }
+  perm.resize(n);
+  std::sort(perm.begin(), perm.end());
+  return perm;
+}
+
+// e_G, its maximum, the band fraction and the histogram over the measured centres; in sampled mode also the 95 %
+// confidence half-width of e_G (the header).
+void summarize(const std::vector<int>& centres, int nV, const CurvatureMeasureOptions& options,
+               CurvatureMeasureResult& r) {
+  r.histogram.assign(options.histogramBins, 0);
+  int within = 0;
+  double sumAbs = 0, sumSq = 0;
+  for (int v : centres) {
+    const double err = std::abs(r.discrete[v] - r.smooth[v]);
+    sumAbs += err;
+    sumSq += err * err;
+    r.maxAbsoluteError = std::max(r.maxAbsoluteError, err);
+    const double rel = r.relativeError[v];
+    within += std::abs(rel) < options.withinBand;
+    const double t = (rel + options.histogramRange) / (2 * options.histogramRange);
+    const int bin = std::clamp(static_cast<int>(std::floor(t * options.histogramBins)), 0, options.histogramBins - 1);
+    ++r.histogram[bin];
+  }
+  const int n = static_cast<int>(centres.size());
+  r.meanAbsoluteError = sumAbs / n;
+  r.fractionWithinBand = static_cast<double>(within) / n;
+  if (n < nV && n > 1) {
+    const double variance = std::max(0.0, (sumSq - n * r.meanAbsoluteError * r.meanAbsoluteError) / (n - 1));
+    r.meanAbsoluteErrorHalfWidth =
+        1.96 * std::sqrt(variance / n) * std::sqrt(static_cast<double>(nV - n) / (nV - 1));
+  }
+}
+
+}  // namespace
 
 CurvatureMeasureResult gaussianCurvatureMeasure(const IntrinsicTriangulation& mesh,
                                                 const std::vector<Eigen::Vector3d>& referencePoints,
@@ -561,29 +888,28 @@ CurvatureMeasureResult gaussianCurvatureMeasure(const IntrinsicTriangulation& me
   // === the regions
   r.radius = options.radiusFraction * std::sqrt(totalArea(mesh));
   const int nV = m.nVertices();
-  r.discrete.assign(nV, 0.0);
-  r.smooth.assign(nV, 0.0);
-  r.absoluteScale.assign(nV, 0.0);
-  r.relativeError.assign(nV, 0.0);
-  const BallSweep sweep(ctx, mesh, r.radius, options.region);
-  sweep.run(r, options.progress);
+  const bool sampled = options.sampleCentres > 0 && options.sampleCentres < nV;
+  const double unmeasured = sampled ? NAN : 0.0;
+  r.discrete.assign(nV, unmeasured);
+  r.smooth.assign(nV, unmeasured);
+  r.absoluteScale.assign(nV, unmeasured);
+  r.relativeError.assign(nV, unmeasured);
+  std::vector<int> centres;
+  if (sampled) {
+    centres = sampleVertices(nV, options.sampleCentres, options.sampleSeed);
+    BallSweep(ctx, mesh, r.radius, options.region).run(centres, r, options.progress);
+    r.centres = centres;
+  } else {
+    centres.resize(nV);
+    for (int v = 0; v < nV; ++v) centres[v] = v;
+    if (options.algorithm == BallSweepAlgorithm::Patches && options.region == MeasureRegion::GeodesicBall)
+      PatchSweep(ctx, mesh, r.radius).run(r, options.progress);
+    else
+      BallSweep(ctx, mesh, r.radius, options.region).run(centres, r, options.progress);
+  }
 
   // === statistics
-  r.histogram.assign(options.histogramBins, 0);
-  int within = 0;
-  double sumAbs = 0;
-  for (int v = 0; v < nV; ++v) {
-    const double err = std::abs(r.discrete[v] - r.smooth[v]);
-    sumAbs += err;
-    r.maxAbsoluteError = std::max(r.maxAbsoluteError, err);
-    const double rel = r.relativeError[v];
-    within += std::abs(rel) < options.withinBand;
-    const double t = (rel + options.histogramRange) / (2 * options.histogramRange);
-    const int bin = std::clamp(static_cast<int>(std::floor(t * options.histogramBins)), 0, options.histogramBins - 1);
-    ++r.histogram[bin];
-  }
-  r.meanAbsoluteError = sumAbs / nV;
-  r.fractionWithinBand = static_cast<double>(within) / nV;
+  summarize(centres, nV, options, r);
   return r;
 }
 

@@ -79,7 +79,9 @@ nlohmann::json curvatureMeasureJson(const intrinsic::CurvatureMeasureResult& c,
           {"within_band", o.withinBand},
           {"histogram_range", o.histogramRange},
           {"histogram", c.histogram},
-          {"smooth_total_curvature", c.smoothTotalCurvature}};
+          {"smooth_total_curvature", c.smoothTotalCurvature},
+          {"sampled_centres", static_cast<int>(c.centres.size())},  // 0: the exact all-vertex check
+          {"mean_abs_error_half_width_95", c.meanAbsoluteErrorHalfWidth}};
 }
 
 nlohmann::json meshSummaryJson(const intrinsic::MeshSummary& s) {

@@ -41,6 +41,19 @@ enum class MeasureRegion {
 // on a disk chart (spherical cap, hyperbolic disk) it is the inscribed polygon's chords, whose k_g and small turnings
 // add up to the circle's ∫k_g ds to O(h²) (the triangles tile that polygon, not the disk).
 
+// How the all-vertex check sweeps its balls (GeodesicBall regions; TriangleUnion regions are always measured ball by
+// ball). Both give the same numbers to round-off — the same distances bit for bit and the same terms, added in another
+// order (docs/theory.md §5, "Cost"): per ball |Δφ_T| ≤ 2(k−1)u Σ|atoms|, |Δφ_M| ≤ 2(k−1)u |φ_M|(B) with k the
+// ball's number of terms and u = 2⁻⁵³.
+enum class BallSweepAlgorithm {
+  // Patches of 16 neighbouring centres share one label-correcting Dijkstra whose 16 distance fields are carried side
+  // by side, and the terms inside every ball of a patch are added once (the default; 1.7× less CPU at 48k vertices,
+  // 3.9× at 125k: docs/benchmarks.md). Still O(V²).
+  Patches,
+  // One Dijkstra per centre, the earlier algorithm, kept as the reference the tests compare with.
+  BallByBall
+};
+
 struct CurvatureMeasureOptions {
   MeasureRegion region = MeasureRegion::GeodesicBall;
   // true (default): the boundary atoms above on both sides. false: interior vertices' deficits against ∫K dA only.
@@ -57,8 +70,16 @@ struct CurvatureMeasureOptions {
   // Called with (balls done, balls in all) after every hundredth of the balls and after the last; may be empty. The
   // check costs O(V²): each ball holds a fixed fraction of the vertices.
   std::function<void(int, int)> progress;
+  BallSweepAlgorithm algorithm = BallSweepAlgorithm::Patches;
+  // 0 (default): every vertex is a centre — the exact check. N > 0: a quick look at N distinct centres drawn uniformly
+  // without replacement (SplitMix64 from `sampleSeed`, so a seed gives the same centres on every platform); e_G is
+  // then the sample mean of |φ_T − φ_M| with a 95 % confidence interval (result.meanAbsoluteErrorHalfWidth). N ≥ the
+  // vertex count measures every vertex.
+  int sampleCentres = 0;
+  unsigned long long sampleSeed = 1;
 
-  // What is wrong with these options ("" when valid): radiusFraction > 0.
+  // What is wrong with these options ("" when valid): radiusFraction > 0, sampleCentres ≥ 0, histogramBins ≥ 1,
+  // histogramRange > 0.
   std::string validate() const;
 };
 
@@ -71,7 +92,14 @@ struct CurvatureMeasureResult {
                                       // area inside), plus ∫|k_g| ds and Σ |π − α| with boundary terms. The
                                       // normalization of relative errors.
   std::vector<double> relativeError;  // (φ_T − φ_M) / absoluteScale; 0 where the measure vanishes on the ball
-  double meanAbsoluteError = 0;       // the paper's e_G
+  double meanAbsoluteError = 0;       // the paper's e_G (sampled mode: the sample mean)
+  // Sampled mode (options.sampleCentres > 0): the centres measured, ascending — the per-vertex arrays above are NaN at
+  // every other vertex and the statistics below are the sample's — and the half-width of the 95 % confidence interval
+  // of e_G, 1.96·s/√N·√((V − N)/(V − 1)) (s the sample's standard deviation of |φ_T − φ_M|, the finite-population
+  // correction for drawing without replacement; a normal approximation, fair for N ≳ 30). Exact mode: centres is empty
+  // and the half-width 0.
+  std::vector<int> centres;
+  double meanAbsoluteErrorHalfWidth = 0;
   double maxAbsoluteError = 0;
   double fractionWithinBand = 0;  // of vertices with |relative error| < withinBand
   std::vector<int> histogram;     // counts per bin; out-of-range errors go to the end bins
