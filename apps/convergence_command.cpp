@@ -11,6 +11,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "usage_errors.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
@@ -50,7 +51,7 @@ std::vector<int> parseCounts(const std::string& list) {
       ++end;
     }
     if (item.empty() || !end || *end != '\0' || !(x >= 10) || x > 1e8)
-      throw InputError("--vertices: '" + item + "' is not a vertex count (expected e.g. 1k,2k,4500)");
+      throw UsageError("--vertices: '" + item + "' is not a vertex count (expected e.g. 1k,2k,4500)");
     out.push_back(static_cast<int>(x));
   }
   return out;
@@ -64,7 +65,7 @@ refine::ConvergenceOptions studyOptions(const ConvergenceArgs& a) {
   } else if (a.levels > 0) {
     // The first `levels` of the paper's Table 2 counts.
     if (a.levels < 2 || a.levels > 11)
-      throw InputError("--levels: expected 2 to 11, found " + std::to_string(a.levels));
+      throw UsageError("--levels: expected 2 to 11, found " + std::to_string(a.levels));
     o.targetVertices.resize(a.levels);
   }
   o.remesh.ratioBound = a.ratio;

@@ -7,6 +7,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "usage_errors.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/io/vtk_writer.h"
@@ -42,6 +43,7 @@ struct RemeshArgs {
   bool keepFailed = false;
   double epsilonRelative = 0;
   std::int64_t maxVertices = refine::MeshRemeshOptions{}.maxVertices;
+  bool epsGiven = false;  // --eps or --eps-rel on the command line
 };
 
 // Total area and ∫K dA of the mesh beside the metric's quadratures (the JSON's smooth_reference).
@@ -64,6 +66,7 @@ void printWithinBandNote(const nlohmann::json& c, double epsilon) {
 }
 
 void run(const RemeshArgs& a) {
+  if (!a.epsGiven) throw UsageError("--eps E or --eps-rel F is required");
   if (isMeshFilePath(
           a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh_input.h)
     return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
@@ -149,8 +152,9 @@ void registerRemeshCommand(CLI::App& app) {
   addHorizonOptions(sub, a->horizon);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
   auto* eps = sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric");
-  sub->add_option("--eps-rel", a->epsilonRelative, "Circumradius bound as a fraction of sqrt(area) (instead of --eps)")
-      ->excludes(eps);
+  auto* epsRel = sub->add_option("--eps-rel", a->epsilonRelative,
+                                 "Circumradius bound as a fraction of sqrt(area) (instead of --eps)");
+  epsRel->excludes(eps);
   sub->add_option("--max-vertices", a->maxVertices, "Refuse an eps whose expected vertex count exceeds this")
       ->capture_default_str();
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (sqrt 2: 20.7 deg)")
@@ -177,7 +181,10 @@ void registerRemeshCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--ascii", a->ascii, "Write ASCII PLY instead of binary");
   addKeepFailedOption(sub, a->keepFailed);
-  sub->callback([a] { run(*a); });
+  sub->callback([a, eps, epsRel] {
+    a->epsGiven = eps->count() + epsRel->count() > 0;
+    run(*a);
+  });
 }
 
 }  // namespace conformesh::apps
