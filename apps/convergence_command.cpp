@@ -168,8 +168,7 @@ std::vector<std::string> drawPlots(const std::string& jsonPath, const std::strin
   const std::string script = std::filesystem::exists(CONFORMESH_INSTALLED_PLOT_SCRIPT)
                                  ? CONFORMESH_INSTALLED_PLOT_SCRIPT
                                  : CONFORMESH_SOURCE_PLOT_SCRIPT;
-  // Debian's interpreter, which python3-matplotlib belongs to, ahead of any other python3 on the PATH.
-  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string python = scriptInterpreter();  // CMake's CONFORMESH_PYTHON (cli_common.h)
   const std::string cmd = python + " '" + script + "' '" + jsonPath + "' '" + prefix + "'";
   if (std::system(cmd.c_str()) != 0)
     progress("plots skipped: `" + cmd + "` failed (needs python3-matplotlib); the CSV and JSON are written");

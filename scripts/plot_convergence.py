@@ -11,11 +11,26 @@ against mean circumradius, log-log with fitted slopes; histogram of relative mea
 import json
 import sys
 
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+def _missing_module(error):
+    """Exits naming the missing module and the Debian package that provides it (status 1, message on stderr)."""
+    import os
+    module = (error.name or "?").split(".")[0]
+    package = {"numpy": "python3-numpy", "matplotlib": "python3-matplotlib",
+               "mpl_toolkits": "python3-matplotlib"}.get(module, "python3-" + module)
+    sys.exit(f"{os.path.basename(sys.argv[0])}: error: no Python module '{module}' for {sys.executable}: install "
+             f"Debian's {package} (apt-get install {package}) and run this script with /usr/bin/python3, the "
+             f"interpreter CMake configures (CONFORMESH_PYTHON)")
+
+
+try:
+    import numpy as np
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ModuleNotFoundError as missing:
+    _missing_module(missing)
 
 
 def slope(x, y):

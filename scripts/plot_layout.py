@@ -10,12 +10,27 @@ JSON: {"title": str, "unit_circle": bool, "triangles": [[x0, y0, x1, y1, x2, y2,
 import json
 import sys
 
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
-from matplotlib.patches import Circle  # noqa: E402
+def _missing_module(error):
+    """Exits naming the missing module and the Debian package that provides it (status 1, message on stderr)."""
+    import os
+    module = (error.name or "?").split(".")[0]
+    package = {"numpy": "python3-numpy", "matplotlib": "python3-matplotlib",
+               "mpl_toolkits": "python3-matplotlib"}.get(module, "python3-" + module)
+    sys.exit(f"{os.path.basename(sys.argv[0])}: error: no Python module '{module}' for {sys.executable}: install "
+             f"Debian's {package} (apt-get install {package}) and run this script with /usr/bin/python3, the "
+             f"interpreter CMake configures (CONFORMESH_PYTHON)")
+
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import LineCollection, PolyCollection
+    from matplotlib.patches import Circle
+except ModuleNotFoundError as missing:
+    _missing_module(missing)
 
 # Outline dark grey, then one colour per generator loop (Okabe–Ito), as in the SVG (layout_picture.cpp).
 PALETTE = ["#333333", "#D55E00", "#0072B2", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"]

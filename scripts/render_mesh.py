@@ -16,7 +16,22 @@ vertex), error and relative_error (Gaussian-curvature-measure check, paper eq. 5
 import argparse
 import sys
 
-import numpy as np
+
+def _missing_module(error):
+    """Exits naming the missing module and the Debian package that provides it (status 1, message on stderr)."""
+    import os
+    module = (error.name or "?").split(".")[0]
+    package = {"numpy": "python3-numpy", "matplotlib": "python3-matplotlib",
+               "mpl_toolkits": "python3-matplotlib"}.get(module, "python3-" + module)
+    sys.exit(f"{os.path.basename(sys.argv[0])}: error: no Python module '{module}' for {sys.executable}: install "
+             f"Debian's {package} (apt-get install {package}) and run this script with /usr/bin/python3, the "
+             f"interpreter CMake configures (CONFORMESH_PYTHON)")
+
+
+try:
+    import numpy as np
+except ModuleNotFoundError as missing:
+    _missing_module(missing)
 
 
 def read_vtk(path):
@@ -73,10 +88,13 @@ def main():
         sys.exit(f"render_mesh.py: {a.vtk}: no point field '{a.field}'; it has: {', '.join(sorted(fields))}")
     values = fields[a.field][triangles].mean(axis=1)
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    except ModuleNotFoundError as missing:
+        _missing_module(missing)
 
     signed = a.field in ("error", "relative_error", "curvature", "smooth_curvature") and values.min() < 0 < values.max()
     if signed:
