@@ -119,9 +119,9 @@ def histogram(ax, rel, fin, what):
     rng, band = fin["histogram_range"], fin["within_band"]
     ax.hist(np.clip(rel, -rng, rng), bins=len(fin["histogram"]), range=(-rng, rng), label="vertices")
     ax.axvspan(-band, band, color="g", alpha=0.1, label="within +-%.2f: %.1f %%" % (band, 100 * fin["fraction_within"]))
-    ax.set_xlabel("relative error of the %s measure" % what)
+    ax.set_xlabel("relative error of the %s measure (end bins: beyond +-%g)" % (what, rng))
     ax.set_ylabel("vertices")
-    ax.legend(fontsize=8, loc="upper left")
+    ax.legend(fontsize=8, loc="best")
 
 
 def figure12(prefix, title, study, levels):
