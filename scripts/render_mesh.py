@@ -35,8 +35,11 @@ except ModuleNotFoundError as missing:
 
 
 def read_vtk(path):
-    """Legacy ASCII POLYDATA as conformesh's vtk_writer writes it: POINTS, POLYGONS (triangles), POINT_DATA scalars."""
+    """Legacy ASCII POLYDATA as conformesh's vtk_writer writes it: POINTS, POLYGONS (triangles), POINT_DATA scalars.
+    Returns points, triangles, fields and the title line."""
     with open(path) as f:
+        f.readline()
+        title = f.readline().strip()
         tokens = f.read().split()
     points, triangles, fields = None, None, {}
     i = 0
@@ -69,7 +72,7 @@ def read_vtk(path):
     if points is None or triangles is None:
         sys.exit(f"render_mesh.py: {path}: expected POINTS and POLYGONS sections, found "
                  f"{'no POINTS' if points is None else 'no POLYGONS'}")
-    return points, triangles, fields
+    return points, triangles, fields, title
 
 
 def main():
@@ -83,7 +86,7 @@ def main():
     ap.add_argument("--no-edges", action="store_true", help="do not draw the triangles' edges")
     a = ap.parse_args()
 
-    points, triangles, fields = read_vtk(a.vtk)
+    points, triangles, fields, title = read_vtk(a.vtk)
     if a.field not in fields:
         sys.exit(f"render_mesh.py: {a.vtk}: no point field '{a.field}'; it has: {', '.join(sorted(fields))}")
     values = fields[a.field][triangles].mean(axis=1)
@@ -119,7 +122,11 @@ def main():
     ax.set_axis_off()
     sm = matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap)
     fig.colorbar(sm, ax=ax, shrink=0.6, label=a.field + (" (triangle mean; scale clipped at 99th percentile)"))
-    ax.set_title(f"{len(points)} vertices, {len(triangles)} triangles", fontsize=10)
+    caption = f"{len(points)} vertices, {len(triangles)} triangles"
+    if "no embedding in R3" in title:  # remesh_output.cpp's kDrawnOnReferenceSurface
+        caption += ("\nno embedding in R³: drawn on the chart's reference surface (its canonical domain),"
+                    "\nnot the surface's shape; lengths and fields are those of the metric")
+    ax.set_title(caption, fontsize=10)
     fig.savefig(a.output, bbox_inches="tight")
     print(f"wrote {a.output}")
 

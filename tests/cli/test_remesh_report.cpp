@@ -5,7 +5,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <fstream>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -87,4 +89,21 @@ TEST_CASE("remesh --horizon report: smooth_reference's area is the horizon's (8 
   const auto s = remeshJson("--horizon " + shape + " --param a=0.8 --eps 0.2");
   CHECK(s.at("smooth_area").get<double>() == Approx(8 * M_PI * 1.6).epsilon(kQuadrature));
   CHECK(s.at("smooth_total_curvature").get<double>() == Approx(4 * M_PI).margin(1e-8));
+}
+
+TEST_CASE("remesh --vtk: a surface with no embedding says in its title that it is drawn on the reference surface") {
+  const auto dir = conformesh::testing::scratchDir();
+  for (const auto& [args, embedded] : {std::pair<std::string, bool>{"kerr-newman --param a=0.99 --eps 0.2", false},
+                                       {"ellipsoid --param f=0.3 --eps 0.2", true}}) {
+    const auto vtk = (dir / "title.vtk").string();
+    const auto r = runConformesh("-q remesh " + args + " --no-check -o " + (dir / "title.ply").string() + " --vtk " + vtk);
+    INFO(args << "\n" << r.err);
+    REQUIRE(r.status == 0);
+    std::ifstream in(vtk);
+    std::string header, title;
+    std::getline(in, header);
+    std::getline(in, title);
+    // Kerr a/M > √3/2 has negative curvature at the poles: no embedding (Smarr 1973); the ellipsoid is its embedding.
+    CHECK((title.find("no embedding in R3") == std::string::npos) == embedded);
+  }
 }
