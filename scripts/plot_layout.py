@@ -36,6 +36,20 @@ except ModuleNotFoundError as missing:
 PALETTE = ["#333333", "#D55E00", "#0072B2", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"]
 
 
+def legend(ax, d):
+    """What the colours mean: the fundamental domain and the cover's tiles, the outline, and generator loop i
+    (line colour i, layout_picture.cpp: the i-th basis loop of the fundamental group, drawn on its edges in D)."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+    handles = [Patch(facecolor=(0.70, 0.78, 1.0), edgecolor="#1f3b73", label="fundamental domain")]
+    if any(t[6] == 1 for t in d["triangles"]):
+        handles.append(Patch(facecolor=(0.86, 0.90, 1.0), edgecolor="#9aa7bf", label="tiles of the universal cover"))
+    for c in sorted({line["colour"] for line in d["lines"]}):
+        name = "outline (cut boundary)" if c == 0 else "loop of generator g%d" % c
+        handles.append(Line2D([], [], color=PALETTE[c % len(PALETTE)], lw=1.0 if c == 0 else 2.0, label=name))
+    ax.legend(handles=handles, loc="upper right", fontsize=8, framealpha=0.85)
+
+
 def main():
     if len(sys.argv) < 3:
         sys.exit("usage: plot_layout.py LAYOUT.json OUT.png [PIXELS]")
@@ -64,6 +78,7 @@ def main():
         lw = 1.0 if line["colour"] == 0 else 2.0
         ax.add_collection(LineCollection([pts], colors=colour, linewidths=lw))
     ax.autoscale_view()
+    legend(ax, d)
     if d.get("unit_circle"):
         ax.set_xlim(-1.02, 1.02)
         ax.set_ylim(-1.02, 1.02)
