@@ -1,6 +1,8 @@
 // cli_common.cpp — shared plumbing of the conformesh subcommands (see cli_common.h).
 #include "cli_common.h"
 
+#include <filesystem>
+
 #include "conformesh/refine/pipeline/remesh_json.h"
 
 #include <chrono>
@@ -163,6 +165,13 @@ void printNotices(const std::vector<std::string>& notices) {
 void addKeepFailedOption(CLI::App* sub, bool& keepFailed) {
   sub->add_flag("--keep-failed", keepFailed,
                 "An output that fails verification is written as NAME.failed.EXT (exit 3)");
+}
+
+std::string scriptInterpreter() {
+#ifdef CONFORMESH_PYTHON_INTERPRETER
+  if (std::filesystem::exists(CONFORMESH_PYTHON_INTERPRETER)) return CONFORMESH_PYTHON_INTERPRETER;
+#endif
+  return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
 }
 
 }  // namespace conformesh::apps

@@ -48,6 +48,10 @@ void addKeepFailedOption(CLI::App* sub, bool& keepFailed);
 // Prints `j` to stdout, indented, followed by a newline.
 void printJson(const nlohmann::json& j);
 
+// The interpreter for scripts/*.py: CMake's CONFORMESH_PYTHON when it exists (default Debian's /usr/bin/python3),
+// else /usr/bin/python3, else "python3" from the PATH.
+std::string scriptInterpreter();
+
 // A progress line on stderr ("conformesh: <what>"), unless quiet mode is on (--quiet on the root command).
 void progress(const std::string& what);
 void setQuiet(bool quiet);

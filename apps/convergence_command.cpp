@@ -11,6 +11,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "usage_errors.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
@@ -50,7 +51,7 @@ std::vector<int> parseCounts(const std::string& list) {
       ++end;
     }
     if (item.empty() || !end || *end != '\0' || !(x >= 10) || x > 1e8)
-      throw InputError("--vertices: '" + item + "' is not a vertex count (expected e.g. 1k,2k,4500)");
+      throw UsageError("--vertices: '" + item + "' is not a vertex count (expected e.g. 1k,2k,4500)");
     out.push_back(static_cast<int>(x));
   }
   return out;
@@ -64,7 +65,7 @@ refine::ConvergenceOptions studyOptions(const ConvergenceArgs& a) {
   } else if (a.levels > 0) {
     // The first `levels` of the paper's Table 2 counts.
     if (a.levels < 2 || a.levels > 11)
-      throw InputError("--levels: expected 2 to 11, found " + std::to_string(a.levels));
+      throw UsageError("--levels: expected 2 to 11, found " + std::to_string(a.levels));
     o.targetVertices.resize(a.levels);
   }
   o.remesh.ratioBound = a.ratio;
@@ -167,8 +168,7 @@ std::vector<std::string> drawPlots(const std::string& jsonPath, const std::strin
   const std::string script = std::filesystem::exists(CONFORMESH_INSTALLED_PLOT_SCRIPT)
                                  ? CONFORMESH_INSTALLED_PLOT_SCRIPT
                                  : CONFORMESH_SOURCE_PLOT_SCRIPT;
-  // Debian's interpreter, which python3-matplotlib belongs to, ahead of any other python3 on the PATH.
-  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string python = scriptInterpreter();  // CMake's CONFORMESH_PYTHON (cli_common.h)
   const std::string cmd = python + " '" + script + "' '" + jsonPath + "' '" + prefix + "'";
   if (std::system(cmd.c_str()) != 0)
     progress("plots skipped: `" + cmd + "` failed (needs python3-matplotlib); the CSV and JSON are written");

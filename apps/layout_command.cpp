@@ -65,8 +65,7 @@ void writePng(const LayoutDrawing& d, const std::string& path, int pixels) {
     f << nlohmann::json{{"title", d.title}, {"unit_circle", d.unitCircle}, {"triangles", tris}, {"lines", lines}}
              .dump();
   }
-  // Debian's interpreter, which python3-matplotlib belongs to, ahead of any other python3 on the PATH.
-  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string python = scriptInterpreter();  // CMake's CONFORMESH_PYTHON (cli_common.h)
   const std::string cmd =
       python + " '" + plotScript() + "' '" + jsonPath + "' '" + path + "' " + std::to_string(pixels) + " 2>&1";
   const int status = std::system(cmd.c_str());

@@ -1,6 +1,6 @@
 // main.cpp — the `conformesh` command: a root CLI11 app with one subcommand per pipeline stage. Library errors become
-// one line on stderr ("conformesh: error: FILE:LINE: ...") and exit status 1; command-line mistakes exit 2; an output
-// that fails its verification (output_verification.h) exits 3.
+// one line on stderr ("conformesh: error: FILE:LINE: ...") and exit status 1; command-line mistakes exit 2 with hints
+// (usage_errors.h); an output that fails its verification (output_verification.h) exits 3.
 #include <exception>
 #include <iostream>
 
@@ -9,6 +9,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "conformesh/intrinsic/errors.h"
+#include "usage_errors.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -40,9 +41,12 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // CLI11 prints the message (or the help) and has its own codes per kind of mistake (104–113); the documented
-    // status for every malformed command line is 2, and 0 for --help.
-    return app.exit(e) == 0 ? 0 : conformesh::apps::kExitUsage;
+    // --help (and --help-all) are "errors" with code 0: CLI11 prints the help. Every other kind (CLI11's codes
+    // 104–113) is a malformed command line: the documented style and status 2 (usage_errors.h).
+    if (e.get_exit_code() == 0) return app.exit(e);
+    return conformesh::apps::reportUsageError(app, e.what(), argc, argv);
+  } catch (const conformesh::apps::UsageError& e) {
+    return conformesh::apps::reportUsageError(app, e.what(), argc, argv);
   } catch (const conformesh::apps::OutputRejected& e) {
     std::cerr << "conformesh: error: " << e.what() << '\n';
     return conformesh::apps::kExitVerification;

@@ -7,6 +7,7 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "usage_errors.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/io/vtk_writer.h"
@@ -43,9 +44,30 @@ struct RemeshArgs {
   bool keepFailed = false;
   double epsilonRelative = 0;
   std::int64_t maxVertices = refine::MeshRemeshOptions{}.maxVertices;
+  bool epsGiven = false;  // --eps or --eps-rel on the command line
 };
 
+// Total area and ∫K dA of the mesh beside the metric's quadratures (the JSON's smooth_reference).
+void printSmoothReference(const nlohmann::json& s) {
+  std::printf("  %-34s %.10g (smooth %.10g, relative %+.2e)\n", "total area", s["mesh_area"].get<double>(),
+              s["smooth_area"].get<double>(), s["area_relative_difference"].get<double>());
+  // Closed: both are 2πχ. With boundary the deficits leave out the boundary strip, an O(eps) difference.
+  char closed[64] = ", interior vertices: O(eps) short";
+  if (!s["gauss_bonnet"].is_null()) std::snprintf(closed, sizeof closed, ", 2 pi chi %.10g", s["gauss_bonnet"].get<double>());
+  std::printf("  %-34s %.10g (smooth %.10g%s, difference %+.2e)\n", "integral of K dA",
+              s["mesh_total_curvature"].get<double>(), s["smooth_total_curvature"].get<double>(), closed,
+              s["total_curvature_difference"].get<double>());
+}
+
+// What the "within" share measures and what to expect as eps falls (docs/cli.md#remesh; measured there).
+void printWithinBandNote(const nlohmann::json& c, double epsilon) {
+  std::printf("  %-34s (balls of radius r = %.1f eps; share with |error| < %.2f of the ball's int|K|dA: ~0 %% at r "
+              "= 3 eps, > 85 %% at 9 eps)\n",
+              "", c["radius"].get<double>() / epsilon, c["within_band"].get<double>());
+}
+
 void run(const RemeshArgs& a) {
+  if (!a.epsGiven) throw UsageError("--eps E or --eps-rel F is required");
   if (isMeshFilePath(
           a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh_input.h)
     return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
@@ -103,6 +125,7 @@ void run(const RemeshArgs& a) {
               q.meanCircumradius, r.epsilon);
   std::printf("  %-34s %d\n", "inverted triangles in the map back", r.invertedTriangles);
   std::printf("  %-34s %.3e\n", "Gauss-Bonnet residual", q.gaussBonnetResidual);
+  printSmoothReference(j["smooth_reference"]);
   if (j.contains("gaussian_curvature_measure")) {
     const auto& c = j["gaussian_curvature_measure"];
     std::printf("  %-34s e_G %.4e, max %.4e, %.1f %% of vertices within +-%.2f relative\n",
@@ -112,6 +135,7 @@ void run(const RemeshArgs& a) {
       std::printf("  %-34s %d centres: e_G in [%.4e, %.4e] (95 %%)\n", "  sampled", c["sampled_centres"].get<int>(),
                   c["mean_abs_error"].get<double>() - c["mean_abs_error_half_width_95"].get<double>(),
                   c["mean_abs_error"].get<double>() + c["mean_abs_error_half_width_95"].get<double>());
+    printWithinBandNote(c, r.epsilon);
   }
   if (j.contains("horizon")) printHorizonReport(j["horizon"]);
   std::printf("  %-34s discretize %.2f, uniformize %.2f, refine %.2f, pull back %.2f\n", "seconds",
@@ -134,8 +158,9 @@ void registerRemeshCommand(CLI::App& app) {
   addHorizonOptions(sub, a->horizon);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
   auto* eps = sub->add_option("--eps", a->epsilon, "Circumradius bound in the original metric");
-  sub->add_option("--eps-rel", a->epsilonRelative, "Circumradius bound as a fraction of sqrt(area) (instead of --eps)")
-      ->excludes(eps);
+  auto* epsRel = sub->add_option("--eps-rel", a->epsilonRelative,
+                                 "Circumradius bound as a fraction of sqrt(area) (instead of --eps)");
+  epsRel->excludes(eps);
   sub->add_option("--max-vertices", a->maxVertices, "Refuse an eps whose expected vertex count exceeds this")
       ->capture_default_str();
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (sqrt 2: 20.7 deg)")
@@ -166,7 +191,10 @@ void registerRemeshCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--ascii", a->ascii, "Write ASCII PLY instead of binary");
   addKeepFailedOption(sub, a->keepFailed);
-  sub->callback([a] { run(*a); });
+  sub->callback([a, eps, epsRel] {
+    a->epsGiven = eps->count() + epsRel->count() > 0;
+    run(*a);
+  });
 }
 
 }  // namespace conformesh::apps

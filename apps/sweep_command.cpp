@@ -51,7 +51,7 @@ void parseShard(const std::string& s, refine::SweepRunOptions& o) {
 std::vector<std::string> drawPlots(const refine::SweepTable& t) {
   const std::string script = fs::exists(CONFORMESH_INSTALLED_PLOT_SCRIPT) ? CONFORMESH_INSTALLED_PLOT_SCRIPT
                                                                           : CONFORMESH_SOURCE_PLOT_SCRIPT;
-  const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string python = scriptInterpreter();  // CMake's CONFORMESH_PYTHON (cli_common.h)
   std::vector<std::string> written;
   for (const std::string& file : t.groupFiles) {
     const std::string prefix = (fs::path(file).parent_path() / fs::path(file).stem()).string();

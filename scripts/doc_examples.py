@@ -12,7 +12,8 @@ Compared as printed, except wall-clock figures: a number followed by " s" and ev
 with "seconds" (after indentation) or holds `"seconds"`, and the last column of a table headed "... sec"
 (`convergence`), are masked. A block whose commands print nothing is run
 but not compared; a block in which no command shows output is a recipe (docs/studies.md's long runs) and is not run.
-A line "..." in the docs matches any run of lines.
+A line "..." in the docs matches any run of lines. A command must exit 0 unless the docs show its error
+("error:" in its output) or its exit status (`; echo "exit status $?"`).
 
   doc_examples.py --conformesh BIN --data DIR [--python PY] [--update] docs/cli.md ...
 
@@ -131,7 +132,8 @@ def check_page(path, args):
                 continue  # a recipe (docs/studies.md's long runs), not an example: nothing to compare
             for cmd, expected, at, out_at in cmds:
                 actual, rc, err = run_command(cmd, expected, work, env)
-                allowed_failure = "exit status $?" in cmd
+                # An example of an error shows it: its non-zero exit is the point, what it prints is compared.
+                allowed_failure = "exit status $?" in cmd or any("error:" in line for line in expected)
                 if rc != 0 and not allowed_failure:
                     print(f"{path}:{at}: `{cmd}` exited {rc}\n{err}", file=sys.stderr)
                     failures += 1

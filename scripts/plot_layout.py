@@ -10,15 +10,44 @@ JSON: {"title": str, "unit_circle": bool, "triangles": [[x0, y0, x1, y1, x2, y2,
 import json
 import sys
 
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
-from matplotlib.patches import Circle  # noqa: E402
+def _missing_module(error):
+    """Exits naming the missing module and the Debian package that provides it (status 1, message on stderr)."""
+    import os
+    module = (error.name or "?").split(".")[0]
+    package = {"numpy": "python3-numpy", "matplotlib": "python3-matplotlib",
+               "mpl_toolkits": "python3-matplotlib"}.get(module, "python3-" + module)
+    sys.exit(f"{os.path.basename(sys.argv[0])}: error: no Python module '{module}' for {sys.executable}: install "
+             f"Debian's {package} (apt-get install {package}) and run this script with /usr/bin/python3, the "
+             f"interpreter CMake configures (CONFORMESH_PYTHON)")
+
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import LineCollection, PolyCollection
+    from matplotlib.patches import Circle
+except ModuleNotFoundError as missing:
+    _missing_module(missing)
 
 # Outline dark grey, then one colour per generator loop (Okabe–Ito), as in the SVG (layout_picture.cpp).
 PALETTE = ["#333333", "#D55E00", "#0072B2", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"]
+
+
+def legend(ax, d):
+    """What the colours mean: the fundamental domain and the cover's tiles, the outline, and generator loop i
+    (line colour i, layout_picture.cpp: the i-th basis loop of the fundamental group, drawn on its edges in D)."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+    handles = [Patch(facecolor=(0.70, 0.78, 1.0), edgecolor="#1f3b73", label="fundamental domain")]
+    if any(t[6] == 1 for t in d["triangles"]):
+        handles.append(Patch(facecolor=(0.86, 0.90, 1.0), edgecolor="#9aa7bf", label="tiles of the universal cover"))
+    for c in sorted({line["colour"] for line in d["lines"]}):
+        name = "outline (cut boundary)" if c == 0 else "loop of generator g%d" % c
+        handles.append(Line2D([], [], color=PALETTE[c % len(PALETTE)], lw=1.0 if c == 0 else 2.0, label=name))
+    ax.legend(handles=handles, loc="upper right", fontsize=8, framealpha=0.85)
 
 
 def main():
@@ -49,6 +78,7 @@ def main():
         lw = 1.0 if line["colour"] == 0 else 2.0
         ax.add_collection(LineCollection([pts], colors=colour, linewidths=lw))
     ax.autoscale_view()
+    legend(ax, d)
     if d.get("unit_circle"):
         ax.set_xlim(-1.02, 1.02)
         ax.set_ylim(-1.02, 1.02)

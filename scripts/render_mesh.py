@@ -16,12 +16,30 @@ vertex), error and relative_error (Gaussian-curvature-measure check, paper eq. 5
 import argparse
 import sys
 
-import numpy as np
+
+def _missing_module(error):
+    """Exits naming the missing module and the Debian package that provides it (status 1, message on stderr)."""
+    import os
+    module = (error.name or "?").split(".")[0]
+    package = {"numpy": "python3-numpy", "matplotlib": "python3-matplotlib",
+               "mpl_toolkits": "python3-matplotlib"}.get(module, "python3-" + module)
+    sys.exit(f"{os.path.basename(sys.argv[0])}: error: no Python module '{module}' for {sys.executable}: install "
+             f"Debian's {package} (apt-get install {package}) and run this script with /usr/bin/python3, the "
+             f"interpreter CMake configures (CONFORMESH_PYTHON)")
+
+
+try:
+    import numpy as np
+except ModuleNotFoundError as missing:
+    _missing_module(missing)
 
 
 def read_vtk(path):
-    """Legacy ASCII POLYDATA as conformesh's vtk_writer writes it: POINTS, POLYGONS (triangles), POINT_DATA scalars."""
+    """Legacy ASCII POLYDATA as conformesh's vtk_writer writes it: POINTS, POLYGONS (triangles), POINT_DATA scalars.
+    Returns points, triangles, fields and the title line."""
     with open(path) as f:
+        f.readline()
+        title = f.readline().strip()
         tokens = f.read().split()
     points, triangles, fields = None, None, {}
     i = 0
@@ -54,7 +72,7 @@ def read_vtk(path):
     if points is None or triangles is None:
         sys.exit(f"render_mesh.py: {path}: expected POINTS and POLYGONS sections, found "
                  f"{'no POINTS' if points is None else 'no POLYGONS'}")
-    return points, triangles, fields
+    return points, triangles, fields, title
 
 
 def main():
@@ -68,15 +86,18 @@ def main():
     ap.add_argument("--no-edges", action="store_true", help="do not draw the triangles' edges")
     a = ap.parse_args()
 
-    points, triangles, fields = read_vtk(a.vtk)
+    points, triangles, fields, title = read_vtk(a.vtk)
     if a.field not in fields:
         sys.exit(f"render_mesh.py: {a.vtk}: no point field '{a.field}'; it has: {', '.join(sorted(fields))}")
     values = fields[a.field][triangles].mean(axis=1)
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    except ModuleNotFoundError as missing:
+        _missing_module(missing)
 
     signed = a.field in ("error", "relative_error", "curvature", "smooth_curvature") and values.min() < 0 < values.max()
     if signed:
@@ -101,7 +122,11 @@ def main():
     ax.set_axis_off()
     sm = matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap)
     fig.colorbar(sm, ax=ax, shrink=0.6, label=a.field + (" (triangle mean; scale clipped at 99th percentile)"))
-    ax.set_title(f"{len(points)} vertices, {len(triangles)} triangles", fontsize=10)
+    caption = f"{len(points)} vertices, {len(triangles)} triangles"
+    if "no embedding in R3" in title:  # remesh_output.cpp's kDrawnOnReferenceSurface
+        caption += ("\nno embedding in R³: drawn on the chart's reference surface (its canonical domain),"
+                    "\nnot the surface's shape; lengths and fields are those of the metric")
+    ax.set_title(caption, fontsize=10)
     fig.savefig(a.output, bbox_inches="tight")
     print(f"wrote {a.output}")
 

@@ -158,3 +158,52 @@ TEST_CASE("malformed command lines exit 2 whatever CLI11's kind of mistake, --he
     CHECK(r.out.find("Usage") != std::string::npos);
   }
 }
+
+namespace {
+// A malformed command line: status 2, the first stderr line "conformesh: error: COMMAND: ..." naming `what`, and a
+// "conformesh: hint:" line containing `hint` ("" for only the --help pointer).
+void requireUsageError(const std::string& args, const std::string& what, const std::string& hint) {
+  const Run r = cli(args);
+  INFO("conformesh " << args << "\nstderr: " << r.err);
+  CHECK(r.status == 2);
+  CHECK(r.err.rfind("conformesh: error: ", 0) == 0);  // the first line, no CLI11 text before it
+  const std::string first = r.err.substr(0, r.err.find('\n'));
+  CHECK(first.find(what) != std::string::npos);
+  CHECK(r.err.find("Run with --help") == std::string::npos);  // CLI11's own wording is replaced
+  CHECK(r.err.find("conformesh: hint: " ) != std::string::npos);
+  CHECK(r.err.find(hint) != std::string::npos);
+  CHECK(r.err.find("details: docs/cli.md") != std::string::npos);
+}
+}  // namespace
+
+TEST_CASE("command-line errors are in the documented style with hints for the common mistakes") {
+  SECTION("convergence --eps: use --vertices or --levels") {
+    requireUsageError("convergence sphere --eps 0.05", "convergence: ", "use --vertices 1k,2k");
+  }
+  SECTION("a missing required option (CLI11's RequiredError)") {
+    requireUsageError("remesh sphere --eps 0.1", "remesh: --output is required", "-o OUT names the output");
+    requireUsageError("info", "info: file is required", "conformesh info --help");
+  }
+  SECTION("remesh without --eps or --eps-rel") {
+    requireUsageError("remesh sphere -o never.ply", "--eps E or --eps-rel F is required", "--eps-rel F sets eps");
+  }
+  SECTION("an unexpected argument (CLI11's ExtrasError)") {
+    requireUsageError("info x.ply --no-such-flag", "info: The following argument was not expected: --no-such-flag",
+                      "docs/cli.md#info");
+  }
+  SECTION("-q after the command, a long option with one dash") {
+    requireUsageError("remesh -q sphere --eps 0.1 -o never.ply", "not expected: -q", "goes before the command");
+    requireUsageError("remesh sphere -eps 0.1 -o never.ply", "-eps", "two dashes: --eps");
+  }
+  SECTION("no command, a misspelt command, an unknown one") {
+    requireUsageError("", "A subcommand is required", "give a command: info");
+    requireUsageError("remsh sphere", "unknown command 'remsh'", "did you mean `conformesh remesh`?");
+    requireUsageError("bogus", "unknown command 'bogus'", "the commands are info");
+  }
+  SECTION("a bad value (conversion) and a command's own check (UsageError)") {
+    requireUsageError("refine x.ply --eps abc -o y.ply", "refine: Could not convert: --eps = abc", "refine --help");
+    requireUsageError("convergence sphere --levels 1", "convergence: --levels: expected 2 to 11, found 1",
+                      "docs/cli.md#convergence");
+  }
+  CHECK_FALSE(std::filesystem::exists("never.ply"));
+}

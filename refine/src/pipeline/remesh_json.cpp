@@ -184,6 +184,19 @@ nlohmann::json embeddingJson(const embedding::EmbeddingResult& fit, const intrin
           {"verdict", fit.verdict}};
 }
 
+nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c) {
+  const auto finiteOrNull = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  return {{"mesh_area", c.meshArea},
+          {"smooth_area", c.smoothArea},
+          {"area_relative_difference", c.areaRelativeDifference},
+          {"mesh_total_curvature", c.meshTotalCurvature},
+          {"smooth_total_curvature", c.smoothTotalCurvature},
+          {"total_curvature_difference", c.totalCurvatureDifference},
+          {"total_curvature_relative_difference", finiteOrNull(c.totalCurvatureRelativeDifference)},
+          {"euler_characteristic", c.eulerCharacteristic},
+          {"gauss_bonnet", c.boundaryLoops == 0 ? nlohmann::json(2 * M_PI * c.eulerCharacteristic) : nlohmann::json(nullptr)}};
+}
+
 nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMetric& metric,
                                 const RemeshOptions& o) {
   return {{"metric", metric.description()},
@@ -201,6 +214,7 @@ nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMe
           {"quality", qualityJson(r.quality)},
           {"inverted_triangles", r.invertedTriangles},
           {"total_area", intrinsic::totalArea(r.mesh)},
+          {"smooth_reference", smoothReferenceJson(intrinsic::compareWithSmoothMetric(r.mesh, metric))},
           {"seconds",
            {{"discretize", r.seconds.discretize},
             {"uniformize", r.seconds.uniformize},

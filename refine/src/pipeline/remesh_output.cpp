@@ -79,6 +79,9 @@ MeshData toMeshData(const RemeshResult& r, const SmoothMetric& metric, double ep
 VtkMesh toVtkMesh(const MeshData& data, const RemeshResult& r) {
   VtkMesh vtk;
   vtk.title = "conformesh remesh: " + data.source;
+  // No embedding (e.g. Kerr a/M > sqrt 3/2): the points are the chart's reference surface; the title says so, and
+  // scripts/render_mesh.py puts it on the picture.
+  if (r.positions.empty()) vtk.title += kDrawnOnReferenceSurface;
   vtk.points = r.positions.empty() ? r.reference : r.positions;
   vtk.triangles = data.faces;
   for (const auto& [name, values] : data.vertexProperties)

@@ -111,7 +111,10 @@ RemeshResult remeshUniformized(const UniformizedMetric& prepared, const intrinsi
 // smooth_curvature (K of the metric at the vertex), input_face and input_b0..2 (the vertex's place on T0).
 intrinsic::MeshData toMeshData(const RemeshResult& result, const intrinsic::SmoothMetric& metric, double epsilon);
 // The same for ParaView: points are the embedding where known, else the chart's reference surface (the unit sphere
-// for sphere charts); the per-vertex properties become point fields.
+// for sphere charts), and then the title ends with kDrawnOnReferenceSurface; the per-vertex properties become point
+// fields.
 intrinsic::VtkMesh toVtkMesh(const intrinsic::MeshData& data, const RemeshResult& result);
+inline constexpr const char* kDrawnOnReferenceSurface =
+    "; no embedding in R3: points on the chart's reference surface (canonical domain), not the surface's shape";
 
 }  // namespace conformesh::refine

@@ -8,6 +8,7 @@
 #include "conformesh/embedding/fit/isometric_embedding.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+#include "conformesh/intrinsic/measure/smooth_reference.h"
 #include "conformesh/intrinsic/mesh/mesh_summary.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
@@ -50,9 +51,15 @@ nlohmann::json meshSummaryJson(const intrinsic::MeshSummary& s);
 // puncture figures or the cylinder's height where they apply.
 nlohmann::json uniformizedJson(const intrinsic::Uniformization& u);
 
+// The mesh against its smooth metric (smooth_reference.h): mesh_area, smooth_area, area_relative_difference,
+// mesh_total_curvature, smooth_total_curvature, total_curvature_difference, total_curvature_relative_difference (null
+// when ∫K dA vanishes), euler_characteristic, gauss_bonnet (2πχ; null with boundary).
+nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c);
+
 // The dict of `remesh FAMILY --json` (without "output" / "vtk", and without "gaussian_curvature_measure", which the
 // caller adds when it ran the check): metric, eps, ratio_bound, smoothing_passes, segment_rule, t0, uniformization,
-// disk_target, refinement, quality_uniformized, quality, inverted_triangles, total_area, seconds.
+// disk_target, refinement, quality_uniformized, quality, inverted_triangles, total_area, smooth_reference
+// (smoothReferenceJson: two quadratures over the chart, milliseconds for the analytic families), seconds.
 nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMetric& metric,
                                 const RemeshOptions& options);
 // The dict of `remesh MESHFILE --json` (the same omissions): input, eps, ratio_bound, refine_in, smoothing_passes,
