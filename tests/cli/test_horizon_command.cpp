@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "conformesh/intrinsic/metric/sampled_spatial_metric.h"
+
 namespace fs = std::filesystem;
 using conformesh::testing::runConformesh;
 
@@ -55,4 +57,26 @@ TEST_CASE("remesh --horizon: bad input exits 1 (InputError) and names the file")
   r = runConformesh("-q remesh sphere --horizon " + kShape + " --eps 0.2 -o " + (dir / "x.ply").string());
   CHECK(r.status == 1);  // kExitFailure: main.cpp maps every InputError to 1 (2 is CLI usage)
   CHECK(r.err.find("--horizon replaces the FAMILY") != std::string::npos);
+}
+
+// docs/horizons.md §5b: the same shape in a Kerr–Schild γ sampled on a 40³ grid (h = 0.138) written as HDF5 in the
+// ADMBase layout, read by `--spatial-metric FILE.h5:/group`.
+TEST_CASE("remesh --horizon in a sampled gamma (HDF5): Smarr's area, spin and Gauss-Bonnet") {
+  using namespace conformesh::intrinsic;
+  const fs::path dir = conformesh::testing::scratchDir(), grid = dir / "ks08.h5", out = dir / "sampled.ply";
+  const int n = 40;
+  const double L = 2.7, h = 2 * L / (n - 1);
+  writeSpatialMetricHdf5(sampleSpatialMetric(KerrSchildMetric(1.0, 0.8, Eigen::Vector3d::Zero()), {n, n, n},
+                                             Eigen::Vector3d::Constant(-L), Eigen::Vector3d::Constant(h)),
+                         grid.string(), "/it0");
+  const auto r = runConformesh("-q remesh --horizon " + kShape + " --spatial-metric " + grid.string() +
+                               ":/it0 --eps 0.15 --json -o " + out.string());
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& hz = j.at("horizon");
+  // test_sampled_spatial_metric measures the area error of this grid at ~1e-8 and the spin's at ~1e-6.
+  CHECK(hz.at("area").get<double>() == Approx(8 * M_PI * 1.6).epsilon(1e-6));
+  CHECK(hz.at("spin").get<double>() == Approx(0.8).margin(1e-4));
+  CHECK(std::abs(j.at("quality").at("gauss_bonnet_residual").get<double>()) < 1e-9);
 }

@@ -123,6 +123,9 @@ SpatialMetricGrid sampleSpatialMetric(const SpatialMetric& metric, const std::ar
 
 SampledSpatialMetric::SampledSpatialMetric(SpatialMetricGrid grid) : grid_(std::move(grid)) {
   checkSpatialMetricGrid(grid_);
+  packed_.resize(grid_.g[0].size());
+  for (size_t n = 0; n < packed_.size(); ++n)
+    for (int c = 0; c < 6; ++c) packed_[n][c] = grid_.g[c][n];
 }
 
 std::string SampledSpatialMetric::description() const {
@@ -166,9 +169,9 @@ SpatialMetricJet SampledSpatialMetric::evaluate(const Eigen::Vector3d& x, bool d
     for (int q = 0; q < 6; ++q) {
       const double wyz = w[1][q] * w[2][r], dyz = dw[1][q] * w[2][r], ydz = w[1][q] * dw[2][r];
       for (int p = 0; p < 6; ++p) {
-        const long long idx = grid_.index(base[0] + p, base[1] + q, base[2] + r);
+        const std::array<double, 6>& node = packed_[grid_.index(base[0] + p, base[1] + q, base[2] + r)];
         for (int c = 0; c < 6; ++c) {
-          const double f = grid_.g[c][idx];
+          const double f = node[c];
           val[c] += w[0][p] * wyz * f;
           if (derivatives) {
             der[0][c] += dw[0][p] * wyz * f;

@@ -70,6 +70,7 @@ class SampledSpatialMetric : public SpatialMetric {
  private:
   SpatialMetricJet evaluate(const Eigen::Vector3d& x, bool derivatives) const;
   SpatialMetricGrid grid_;
+  std::vector<std::array<double, 6>> packed_;  // the six components of each node together (one cache line)
 };
 
 // Reads the layout above from `pathAndGroup` ("FILE.h5" or "FILE.h5:/group").
