@@ -15,7 +15,8 @@ void addHorizonOptions(CLI::App* sub, HorizonInput& h) {
   sub->add_option("--horizon", h.shape,
                   "Strahlkorper shape JSON (center, coefficients) instead of a family. Details: docs/cli.md#horizons");
   sub->add_option("--spatial-metric", h.spatialMetric,
-                  "3-metric of --horizon: kerr-schild, schwarzschild-isotropic or flat (--param M=, a=, cx=, ...). "
+                  "3-metric of --horizon: kerr-schild, schwarzschild-isotropic, flat (--param M=, a=, cx=, ...) or a sampled "
+                  "grid FILE.h5[:/group]. "
                   "Details: docs/cli.md#horizons")
       ->capture_default_str();
 }

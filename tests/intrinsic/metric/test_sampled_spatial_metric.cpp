@@ -123,7 +123,9 @@ TEST_CASE("sampled spatial metric: the horizon in a sampled Kerr-Schild gamma, G
     const Strahlkorper shape = fitStrahlkorper([&](double t, double) { return kerrSpheroid(a, t); }, 16,
                                                Eigen::Vector3d::Zero());
     const HorizonSurfaceMetric m(shape, std::make_shared<SampledSpatialMetric>(kerrGrid(a, 40)));
-    const HorizonDiagnostics d = horizonDiagnostics(m);
+    HorizonDiagnosticsOptions o;
+    o.areaTolerance = 1e-8;  // the area is checked to 1e-5 here; 1e-10 would cost ten times the evaluations
+    const HorizonDiagnostics d = horizonDiagnostics(m, o);
     // K comes from differenced first derivatives of a C¹ interpolant (∂γ only C⁰): the adaptive quadrature is asked
     // for 1e-6 only, with a budget of 10⁵ evaluations (seconds, not minutes).
     QuadratureOptions q;
