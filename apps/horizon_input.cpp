@@ -8,6 +8,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/measure/horizon_diagnostics.h"
 #include "conformesh/intrinsic/metric/horizon_surface.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::apps {
 
@@ -33,17 +34,7 @@ std::unique_ptr<intrinsic::SmoothMetric> loadMetricOrHorizon(const std::string& 
 
 nlohmann::json horizonReportJson(const intrinsic::SmoothMetric& metric, double meshArea) {
   progress("horizon diagnostics (area, circumferences, spin)");
-  const intrinsic::HorizonDiagnostics d = intrinsic::horizonDiagnostics(metric);
-  nlohmann::json j = {{"area", d.area},
-                      {"mesh_area", meshArea},
-                      {"irreducible_mass", d.irreducibleMass},
-                      {"equatorial_circumference", d.equatorialCircumference},
-                      {"polar_circumference", d.polarCircumference},
-                      {"min_polar_circumference", d.minPolarCircumference},
-                      {"circumference_ratio", d.circumferenceRatio},
-                      {"spin", std::isfinite(d.spin) ? nlohmann::json(d.spin) : nlohmann::json(nullptr)},
-                      {"curves", "smooth metric, chart equator and polar great circles"}};
-  return j;
+  return refine::horizonJson(metric, meshArea);
 }
 
 void printHorizonReport(const nlohmann::json& h) {
