@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/metric/spatial_metric_registry.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "metric/family_checks.h"
 

@@ -11,6 +11,7 @@
 #include <hdf5.h>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/metric/spatial_metric_registry.h"
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/measure/horizon_diagnostics.h"
 #include "conformesh/intrinsic/metric/horizon_surface.h"

@@ -46,4 +46,5 @@
 #include "conformesh/intrinsic/metric/sampled_metric.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
 #include "conformesh/intrinsic/metric/spatial_metric.h"
+#include "conformesh/intrinsic/metric/spatial_metric_registry.h"
 #include "conformesh/intrinsic/metric/teapot_data.h"
