@@ -1,5 +1,5 @@
 // hdf5_handles.h — private RAII for HDF5 identifiers and for switching off HDF5's automatic error printing, shared by
-// the HDF5 readers of metric/ (spatial_metric_hdf5.cpp). Every failure becomes one InputError in the caller's words.
+// the HDF5 readers of metric/ (sampled_field_hdf5.cpp, spatial_metric_hdf5.cpp). Every failure becomes one InputError in the caller's words.
 #pragma once
 
 #include <fstream>
