@@ -8,6 +8,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/measure/horizon_diagnostics.h"
 #include "conformesh/intrinsic/metric/horizon_surface.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::apps {
 
@@ -15,7 +16,8 @@ void addHorizonOptions(CLI::App* sub, HorizonInput& h) {
   sub->add_option("--horizon", h.shape,
                   "Strahlkorper shape JSON (center, coefficients) instead of a family. Details: docs/cli.md#horizons");
   sub->add_option("--spatial-metric", h.spatialMetric,
-                  "3-metric of --horizon: kerr-schild, schwarzschild-isotropic or flat (--param M=, a=, cx=, ...). "
+                  "3-metric of --horizon: kerr-schild, schwarzschild-isotropic, flat (--param M=, a=, cx=, ...) or a sampled "
+                  "grid FILE.h5[:/group]. "
                   "Details: docs/cli.md#horizons")
       ->capture_default_str();
 }
@@ -32,17 +34,7 @@ std::unique_ptr<intrinsic::SmoothMetric> loadMetricOrHorizon(const std::string& 
 
 nlohmann::json horizonReportJson(const intrinsic::SmoothMetric& metric, double meshArea) {
   progress("horizon diagnostics (area, circumferences, spin)");
-  const intrinsic::HorizonDiagnostics d = intrinsic::horizonDiagnostics(metric);
-  nlohmann::json j = {{"area", d.area},
-                      {"mesh_area", meshArea},
-                      {"irreducible_mass", d.irreducibleMass},
-                      {"equatorial_circumference", d.equatorialCircumference},
-                      {"polar_circumference", d.polarCircumference},
-                      {"min_polar_circumference", d.minPolarCircumference},
-                      {"circumference_ratio", d.circumferenceRatio},
-                      {"spin", std::isfinite(d.spin) ? nlohmann::json(d.spin) : nlohmann::json(nullptr)},
-                      {"curves", "smooth metric, chart equator and polar great circles"}};
-  return j;
+  return refine::horizonJson(metric, meshArea);
 }
 
 void printHorizonReport(const nlohmann::json& h) {

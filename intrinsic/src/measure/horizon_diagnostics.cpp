@@ -39,6 +39,8 @@ double meridianLength(const SmoothMetric& m, double phi0, int n) {
 std::string HorizonDiagnosticsOptions::validate() const {
   if (curvePoints < 16) return "horizon diagnostics: curvePoints must be >= 16, found " + std::to_string(curvePoints);
   if (meridians < 1) return "horizon diagnostics: meridians must be >= 1, found " + std::to_string(meridians);
+  if (!(areaTolerance >= 1e-14 && areaTolerance <= 1e-2))
+    return "horizon diagnostics: areaTolerance must lie in [1e-14, 1e-2], found " + std::to_string(areaTolerance);
   return "";
 }
 
@@ -66,7 +68,10 @@ HorizonDiagnostics horizonDiagnostics(const SmoothMetric& metric, const HorizonD
     throw InputError("horizon diagnostics need a sphere chart (u = phi, v = theta), found a " +
                      toString(metric.domain().shape()) + " chart for " + metric.description());
   HorizonDiagnostics d;
-  d.area = metricArea(metric).value;
+  QuadratureOptions q;
+  q.relativeTolerance = options.areaTolerance;
+  q.absoluteTolerance = 0;
+  d.area = metricArea(metric, q).value;
   d.irreducibleMass = std::sqrt(d.area / (16 * M_PI));
   d.equatorialCircumference = equatorLength(metric, options.curvePoints);
   d.polarCircumference = 0, d.minPolarCircumference = std::numeric_limits<double>::infinity();

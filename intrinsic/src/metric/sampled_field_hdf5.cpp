@@ -12,47 +12,15 @@
 #include <hdf5.h>
 
 #include "conformesh/intrinsic/errors.h"
+#include "metric/hdf5_handles.h"
 
 namespace conformesh::intrinsic {
 
 namespace {
 
-// =====================================================================================================================
-// RAII for HDF5 identifiers and the error-printing state
-
-class Id {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Id(hid_t id, Closer close) : id_(id), close_(close) {}
-  Id(Id&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
-  Id(const Id&) = delete;
-  Id& operator=(const Id&) = delete;
-  Id& operator=(Id&&) = delete;
-  ~Id() {
-    if (id_ >= 0) close_(id_);
-  }
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-
- private:
-  hid_t id_;
-  Closer close_;
-};
-
-class QuietErrors {
- public:
-  QuietErrors() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  QuietErrors(const QuietErrors&) = delete;
-  QuietErrors& operator=(const QuietErrors&) = delete;
-  ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
+using hdf5_detail::Id;
+using hdf5_detail::QuietErrors;
+using hdf5_detail::splitGroup;
 
 const char* const kFieldNames[3] = {"g_uu", "g_uv", "g_vv"};
 // Guards the allocation before any sample is read: 10⁸ nodes (2.4 GB of float64) is far beyond any metric a mesher
@@ -194,15 +162,6 @@ struct Reader {
     return x;
   }
 };
-
-// Splits "FILE:/group" when FILE exists and the whole string does not.
-std::pair<std::string, std::string> splitGroup(const std::string& s) {
-  if (std::ifstream(s)) return {s, "/"};
-  const size_t colon = s.rfind(':');
-  if (colon != std::string::npos && colon + 1 < s.size() && s[colon + 1] == '/')
-    return {s.substr(0, colon), s.substr(colon + 1)};
-  return {s, "/"};
-}
 
 void check(herr_t status, const std::string& what) {
   if (status < 0) throw InputError(what);

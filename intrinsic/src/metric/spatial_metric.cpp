@@ -2,7 +2,6 @@
 #include "conformesh/intrinsic/metric/spatial_metric.h"
 
 #include <cmath>
-#include <set>
 
 #include "conformesh/intrinsic/errors.h"
 #include "metric/family_checks.h"
@@ -110,35 +109,6 @@ SpatialMetricJet KerrSchildMetric::jet(const Eigen::Vector3d& x) const {
     j.d[k] = 2 * dH[k] * l * l.transpose() + 2 * H * (lk * l.transpose() + l * lk.transpose());
   }
   return j;
-}
-
-// ---------------------------------------------------------------------------------------------------------------------
-// registry
-
-std::string spatialMetricList() {
-  return "flat                     (no parameters)\n"
-         "schwarzschild-isotropic  M=1 cx=0 cy=0 cz=0\n"
-         "kerr-schild              M=1 a=0 cx=0 cy=0 cz=0 (spin along +z, |a| <= M)\n";
-}
-
-std::unique_ptr<SpatialMetric> makeSpatialMetric(const std::string& name, const std::map<std::string, double>& params) {
-  std::set<std::string> known;
-  if (name == "schwarzschild-isotropic") known = {"M", "cx", "cy", "cz"};
-  else if (name == "kerr-schild") known = {"M", "a", "cx", "cy", "cz"};
-  else if (name != "flat")
-    throw InputError("unknown spatial metric '" + name + "'; known:\n" + spatialMetricList());
-  for (const auto& [key, value] : params)
-    if (!known.count(key))
-      throw InputError("spatial metric '" + name + "': unknown parameter '" + key + "'; known:\n" +
-                       spatialMetricList());
-  auto get = [&](const char* key, double fallback) {
-    const auto it = params.find(key);
-    return it == params.end() ? fallback : it->second;
-  };
-  const Eigen::Vector3d c(get("cx", 0), get("cy", 0), get("cz", 0));
-  if (name == "flat") return std::make_unique<FlatSpatialMetric>();
-  if (name == "schwarzschild-isotropic") return std::make_unique<IsotropicSchwarzschildMetric>(get("M", 1), c);
-  return std::make_unique<KerrSchildMetric>(get("M", 1), get("a", 0), c);
 }
 
 }  // namespace conformesh::intrinsic

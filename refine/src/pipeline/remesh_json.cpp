@@ -256,4 +256,18 @@ nlohmann::json meshRemeshJson(const MeshRemeshResult& r, const intrinsic::Intrin
   return j;
 }
 
+nlohmann::json horizonJson(const intrinsic::SmoothMetric& metric, double meshArea,
+                           const intrinsic::HorizonDiagnosticsOptions& options) {
+  const intrinsic::HorizonDiagnostics d = intrinsic::horizonDiagnostics(metric, options);
+  return {{"area", d.area},
+          {"mesh_area", meshArea},
+          {"irreducible_mass", d.irreducibleMass},
+          {"equatorial_circumference", d.equatorialCircumference},
+          {"polar_circumference", d.polarCircumference},
+          {"min_polar_circumference", d.minPolarCircumference},
+          {"circumference_ratio", d.circumferenceRatio},
+          {"spin", std::isfinite(d.spin) ? nlohmann::json(d.spin) : nlohmann::json(nullptr)},
+          {"curves", "smooth metric, chart equator and polar great circles"}};
+}
+
 }  // namespace conformesh::refine

@@ -18,6 +18,7 @@
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+#include "conformesh/intrinsic/metric/horizon_surface.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/metric/sampled_field_io.h"
@@ -84,10 +85,13 @@ json computeMetricCase(const SweepCase& c, const SweepRunOptions& options,
     throw InputError("option refine-in " + opt["refine-in"].get<std::string>() +
                      " applies to mesh files; a smooth metric is refined uniformized");
   stage(c.kind == SweepInputKind::Field ? "reading metric field " + c.input : "building metric " + c.input);
-  const std::unique_ptr<intrinsic::SmoothMetric> metric =
-      c.kind == SweepInputKind::Field
-          ? std::make_unique<intrinsic::SampledMetric>(intrinsic::readSampledField(c.input))
-          : intrinsic::makeMetric(c.input, c.params);
+  std::unique_ptr<intrinsic::SmoothMetric> metric;
+  if (c.kind == SweepInputKind::Field)
+    metric = std::make_unique<intrinsic::SampledMetric>(intrinsic::readSampledField(c.input));
+  else if (c.kind == SweepInputKind::Horizon)
+    metric = intrinsic::makeHorizonMetricFromFile(c.input);
+  else
+    metric = intrinsic::makeMetric(c.input, c.params);
   RemeshOptions o;
   o.ratioBound = opt["ratio"].get<double>();
   o.uniform = opt["uniform"].get<bool>();
@@ -117,6 +121,12 @@ json computeMetricCase(const SweepCase& c, const SweepRunOptions& options,
   }
   json j = metricRemeshJson(r, *metric, o);
   j["smooth_area"] = area;
+  if (c.kind == SweepInputKind::Horizon) {
+    stage("horizon diagnostics");
+    j["horizon"] = horizonJson(*metric, j["total_area"].get<double>());
+    const intrinsic::HorizonFileMetadata meta = intrinsic::readHorizonMetadata(c.input);
+    j["time"] = meta.hasTime ? json(meta.time) : json(nullptr);
+  }
   intrinsic::MeshData data = toMeshData(r, *metric, o.epsilon);
   if (!opt["no-check"].get<bool>()) {
     stage("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");

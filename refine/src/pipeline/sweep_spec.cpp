@@ -43,7 +43,10 @@ json SweepCase::inputsJson() const {
             {"group", group},
             {"level", level},
             {"input", input},
-            {"kind", kind == SweepInputKind::Family ? "family" : kind == SweepInputKind::Field ? "field" : "mesh"},
+            {"kind", kind == SweepInputKind::Family  ? "family"
+                     : kind == SweepInputKind::Field ? "field"
+                     : kind == SweepInputKind::Mesh  ? "mesh"
+                                                     : "horizon"},
             {"params", params},
             {"options", options}};
   if (targetVertices > 0)
@@ -165,7 +168,9 @@ std::vector<ResolvedInput> resolveInput(const StudyReader& r, const std::string&
     const bool mesh = isMeshPath(p);
     if (mesh && !group.empty()) r.fail(key, "'" + text + "': a group (':/...') applies to HDF5 fields, not meshes");
     const std::string name = fs::path(p).filename().string() + group;
-    out.push_back({mesh ? SweepInputKind::Mesh : SweepInputKind::Field, p + group,
+    // A .json file is a horizon shape (a Strahlkörper naming its own spatial metric, horizon_surface.h).
+    const bool horizon = !mesh && group.empty() && fs::path(p).extension() == ".json";
+    out.push_back({mesh ? SweepInputKind::Mesh : horizon ? SweepInputKind::Horizon : SweepInputKind::Field, p + group,
                    json{{"file", name}, {"content", fnv1a64Hex(readBytes(p))}}, slugOf(fs::path(p).stem().string())});
   }
   return out;

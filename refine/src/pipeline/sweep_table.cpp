@@ -76,7 +76,8 @@ std::string csvTable(const json& records) {
   std::ostringstream out;
   out << "id,status,study,group,level,kind,input,params,eps_target,vertices_target,eps,vertices,triangles,"
          "max_circumradius,mean_circumradius,min_angle_deg,mean_min_angle_deg,e_G,max_error,fraction_within,"
-         "inverted_triangles,total_area,gauss_bonnet_residual,wall_seconds,error_kind,where,error\n";
+         "inverted_triangles,total_area,gauss_bonnet_residual,wall_seconds,error_kind,where,error,"
+         "time,horizon_area,irreducible_mass,equatorial_circumference,polar_circumference,spin\n";
   for (const json& r : records) {
     const json& c = r["case"];
     std::string params;
@@ -91,7 +92,11 @@ std::string csvTable(const json& records) {
                                    at(r, {"gaussian_curvature_measure", "fraction_within"}),
                                    at(r, {"inverted_triangles"}), at(r, {"total_area"}),
                                    at(r, {"quality", "gauss_bonnet_residual"}), at(r, {"wall_seconds"}),
-                                   at(r, {"error_kind"}), at(r, {"where"}), at(r, {"error"})};
+                                   at(r, {"error_kind"}), at(r, {"where"}), at(r, {"error"}),
+                                   // horizon inputs (docs/horizons.md §5c); empty for the others
+                                   at(r, {"time"}), at(r, {"horizon", "area"}), at(r, {"horizon", "irreducible_mass"}),
+                                   at(r, {"horizon", "equatorial_circumference"}),
+                                   at(r, {"horizon", "polar_circumference"}), at(r, {"horizon", "spin"})};
     for (size_t i = 0; i < row.size(); ++i)
       out << (i ? "," : "") << (row[i].is_string() && i == 7 ? row[i].get<std::string>() : csvField(row[i]));
     out << "\n";

@@ -9,6 +9,7 @@
 #include <Eigen/LU>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/metric/spatial_metric_registry.h"
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/metric/spatial_metric.h"
 

@@ -15,11 +15,14 @@ namespace conformesh::intrinsic {
 struct HorizonDiagnosticsOptions {
   int curvePoints = 512;  // trapezoidal nodes per closed curve
   int meridians = 8;      // polar great circles φ₀ = kπ/meridians, k = 0..meridians−1; the polar figure is their max
-  std::string validate() const;  // "" when valid: curvePoints >= 16, meridians >= 1
+  // Relative tolerance of the adaptive area quadrature. A metric that is only C¹ (an interpolated γ,
+  // sampled_spatial_metric.h) needs ~3·10⁶ evaluations for 1e-10; 1e-8 takes a tenth of that.
+  double areaTolerance = 1e-10;
+  std::string validate() const;  // "" when valid: curvePoints >= 16, meridians >= 1, areaTolerance in [1e-14, 1e-2]
 };
 
 struct HorizonDiagnostics {
-  double area = 0;                     // ∫ √det g du dv (adaptive quadrature, metricArea, relative 1e-10)
+  double area = 0;                     // ∫ √det g du dv (adaptive quadrature, metricArea, areaTolerance)
   double irreducibleMass = 0;          // √(A / 16π)
   double equatorialCircumference = 0;  // length of θ = π/2
   double polarCircumference = 0;       // the longest of the polar great circles sampled

@@ -106,4 +106,18 @@ class HorizonSurfaceMetric : public SmoothMetric {
 std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetric(const std::string& shapePath, const std::string& spatialMetric,
                                                         const std::map<std::string, double>& params);
 
+// A shape file that also says what it lives in, for a time series (`conformesh sweep` with horizon inputs): optional
+// keys "spatial_metric" (a name of makeSpatialMetric or an HDF5 grid FILE.h5[:/group], relative to the shape file's
+// folder; default "kerr-schild"), "params" ({"M": 1, "a": 0.8, ...}, default {}) and "time" (a number, default none).
+// Throws InputError naming the file and the key.
+struct HorizonFileMetadata {
+  std::string spatialMetric = "kerr-schild";
+  std::map<std::string, double> params;
+  bool hasTime = false;
+  double time = 0;
+};
+HorizonFileMetadata readHorizonMetadata(const std::string& shapePath);
+// makeHorizonMetric with the file's own spatial metric and parameters.
+std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetricFromFile(const std::string& shapePath);
+
 }  // namespace conformesh::intrinsic

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <array>
-#include <map>
 #include <memory>
 #include <string>
 
@@ -76,11 +75,6 @@ class KerrSchildMetric : public SpatialMetric {
   Eigen::Vector3d c_;
 };
 
-// The names makeSpatialMetric knows, with their parameters and defaults, one per line, for `--help` and errors.
-std::string spatialMetricList();
-// Builds a spatial metric by name: "flat"; "schwarzschild-isotropic" (M = 1, cx = cy = cz = 0);
-// "kerr-schild" (M = 1, a = 0, cx = cy = cz = 0). Throws InputError naming an unknown name or parameter, or a
-// parameter out of range (M ≤ 0, |a| > M).
-std::unique_ptr<SpatialMetric> makeSpatialMetric(const std::string& name, const std::map<std::string, double>& params);
+// The registry by name (makeSpatialMetric, spatialMetricList), including sampled grids: spatial_metric_registry.h.
 
 }  // namespace conformesh::intrinsic

@@ -8,6 +8,7 @@
 #include "conformesh/embedding/fit/isometric_embedding.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
+#include "conformesh/intrinsic/measure/horizon_diagnostics.h"
 #include "conformesh/intrinsic/measure/smooth_reference.h"
 #include "conformesh/intrinsic/mesh/mesh_summary.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
@@ -55,6 +56,11 @@ nlohmann::json uniformizedJson(const intrinsic::Uniformization& u);
 // mesh_total_curvature, smooth_total_curvature, total_curvature_difference, total_curvature_relative_difference (null
 // when ∫K dA vanishes), euler_characteristic, gauss_bonnet (2πχ; null with boundary).
 nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c);
+// The "horizon" dict of `remesh --horizon ... --json` and of a sweep's horizon case (horizon_diagnostics.h on the smooth
+// metric): area, mesh_area (`meshArea`), irreducible_mass, equatorial_circumference, polar_circumference,
+// min_polar_circumference, circumference_ratio, spin (null outside Kerr's range), curves.
+nlohmann::json horizonJson(const intrinsic::SmoothMetric& metric, double meshArea,
+                           const intrinsic::HorizonDiagnosticsOptions& options = {});
 
 // The dict of `remesh FAMILY --json` (without "output" / "vtk", and without "gaussian_curvature_measure", which the
 // caller adds when it ran the check): metric, eps, ratio_bound, smoothing_passes, segment_rule, t0, uniformization,

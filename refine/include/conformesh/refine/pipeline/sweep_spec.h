@@ -14,7 +14,7 @@
 
 namespace conformesh::refine {
 
-enum class SweepInputKind { Family, Field, Mesh };
+enum class SweepInputKind { Family, Field, Mesh, Horizon };
 
 // One remesh of a sweep.
 struct SweepCase {
