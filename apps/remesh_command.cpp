@@ -47,16 +47,28 @@ struct RemeshArgs {
   bool epsGiven = false;  // --eps or --eps-rel on the command line
 };
 
+// " +- E (quadrature stopped above its tolerance)" when the reference's error estimate is above its tolerance (a metric
+// that is only C¹, e.g. an interpolated gamma), else "": the figure then says how far it can be trusted.
+std::string quadratureCaveat(double value, double estimate, double tolerance) {
+  if (!(estimate > tolerance * std::max(1.0, std::abs(value)))) return "";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, " +- %.1e, quadrature stopped above its tolerance", estimate);
+  return buf;
+}
+
 // Total area and ∫K dA of the mesh beside the metric's quadratures (the JSON's smooth_reference).
 void printSmoothReference(const nlohmann::json& s) {
-  std::printf("  %-34s %.10g (smooth %.10g, relative %+.2e)\n", "total area", s["mesh_area"].get<double>(),
-              s["smooth_area"].get<double>(), s["area_relative_difference"].get<double>());
+  const double area = s["smooth_area"].get<double>(), curvature = s["smooth_total_curvature"].get<double>();
+  std::printf("  %-34s %.10g (smooth %.10g%s, relative %+.2e)\n", "total area", s["mesh_area"].get<double>(), area,
+              quadratureCaveat(area, s["smooth_area_error_estimate"].get<double>(), 1e-12).c_str(),
+              s["area_relative_difference"].get<double>());
   // Closed: both are 2πχ. With boundary the deficits leave out the boundary strip, an O(eps) difference.
   char closed[64] = ", interior vertices: O(eps) short";
   if (!s["gauss_bonnet"].is_null()) std::snprintf(closed, sizeof closed, ", 2 pi chi %.10g", s["gauss_bonnet"].get<double>());
-  std::printf("  %-34s %.10g (smooth %.10g%s, difference %+.2e)\n", "integral of K dA",
-              s["mesh_total_curvature"].get<double>(), s["smooth_total_curvature"].get<double>(), closed,
-              s["total_curvature_difference"].get<double>());
+  std::printf("  %-34s %.10g (smooth %.10g%s%s, difference %+.2e)\n", "integral of K dA",
+              s["mesh_total_curvature"].get<double>(), curvature,
+              quadratureCaveat(curvature, s["smooth_total_curvature_error_estimate"].get<double>(), 1e-10).c_str(),
+              closed, s["total_curvature_difference"].get<double>());
 }
 
 // What the "within" share measures and what to expect as eps falls (docs/cli.md#remesh; measured there).

@@ -188,9 +188,11 @@ nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c
   const auto finiteOrNull = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   return {{"mesh_area", c.meshArea},
           {"smooth_area", c.smoothArea},
+          {"smooth_area_error_estimate", c.smoothAreaErrorEstimate},
           {"area_relative_difference", c.areaRelativeDifference},
           {"mesh_total_curvature", c.meshTotalCurvature},
           {"smooth_total_curvature", c.smoothTotalCurvature},
+          {"smooth_total_curvature_error_estimate", c.smoothTotalCurvatureErrorEstimate},
           {"total_curvature_difference", c.totalCurvatureDifference},
           {"total_curvature_relative_difference", finiteOrNull(c.totalCurvatureRelativeDifference)},
           {"euler_characteristic", c.eulerCharacteristic},

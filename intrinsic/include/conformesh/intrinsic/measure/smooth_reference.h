@@ -4,7 +4,8 @@
 // mass √(A/16π), and ∫K dA = 2πχ (4π on a genus-0 horizon) checks the metric itself.
 //
 // Inputs: the output mesh of a remesh (Euclidean background, lengths in the original metric) and its metric.
-// Outputs: SmoothReferenceComparison. Throws ConvergenceError when the quadrature cannot reach its tolerance.
+// Outputs: SmoothReferenceComparison. A quadrature that stops above its tolerance (depth or evaluation budget: a
+// metric that is only C¹) does not throw: its value comes with its error estimate (smooth*ErrorEstimate).
 //
 // What to expect: the mesh area is that of flat triangles with the edges' metric lengths, below the smooth area by
 // O(ε²) (relative); the mesh's interior angle deficits are 2πχ − (boundary turning) exactly (discrete Gauss–Bonnet),

@@ -52,7 +52,7 @@ nlohmann::json meshSummaryJson(const intrinsic::MeshSummary& s);
 // puncture figures or the cylinder's height where they apply.
 nlohmann::json uniformizedJson(const intrinsic::Uniformization& u);
 
-// The mesh against its smooth metric (smooth_reference.h): mesh_area, smooth_area, area_relative_difference,
+// The mesh against its smooth metric (smooth_reference.h): mesh_area, smooth_area (with smooth_area_error_estimate), area_relative_difference,
 // mesh_total_curvature, smooth_total_curvature, total_curvature_difference, total_curvature_relative_difference (null
 // when ∫K dA vanishes), euler_characteristic, gauss_bonnet (2πχ; null with boundary).
 nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c);
