@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/io/file_write.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
 #include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/intrinsic/metric/metric_registry.h"
@@ -128,14 +129,7 @@ void writeField(const std::string& path, const Metric& m, int nu, int nv, const 
     intrinsic::writeSampledFieldHdf5(f, path, group);
     return;
   }
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw InputError(path + ": cannot open for writing");
-    out << intrinsic::formatSampledField(f);
-    if (!out) throw InputError(path + ": write failed");
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw InputError(path + ": cannot rename " + tmp);
+  intrinsic::writeFileAtomically(path, intrinsic::formatSampledField(f));
 }
 
 // (u, v) broadcast to one shape; values evaluated per point.

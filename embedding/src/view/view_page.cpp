@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/io/file_write.h"
 #include "conformesh/intrinsic/mesh/mesh_summary.h"
 
 namespace conformesh::embedding {
@@ -206,21 +207,7 @@ std::string viewPageHtml(const ViewScene& scene, const ViewAssets& assets) {
 
 void writeViewPage(const ViewScene& scene, const ViewAssets& assets, const std::string& path) {
   const std::string page = viewPageHtml(scene, assets);
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw InputError(describeAt(path, "cannot open for writing"));
-    out << page;
-    if (!out.flush()) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw InputError(describeAt(path, "write failed (disk full?)"));
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(describeAt(path, "cannot rename the temporary file into place"));
-  }
+  intrinsic::writeFileAtomically(path, page);
 }
 
 }  // namespace conformesh::embedding

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/io/file_write.h"
 #include "io/mesh_io_internal.h"
 #include "io/text_scanner.h"
 
@@ -60,27 +61,6 @@ std::string readWholeFile(const std::string& path) {
   return bytes;
 }
 
-void writeWholeFile(const std::string& path, const std::string& bytes) {
-  // A name unique to this process and call, in the target's directory so that rename() stays on one file system.
-  static std::atomic<unsigned> counter{0};
-  const std::string temp =
-      path + ".tmp-" + std::to_string(static_cast<long>(::getpid())) + "-" + std::to_string(counter++);
-  std::FILE* f = std::fopen(temp.c_str(), "wbx");
-  if (f == nullptr) throw InputError(path + ": cannot write: " + std::strerror(errno));
-  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  int err = errno;
-  const bool closed = std::fclose(f) == 0;
-  if (written && !closed) err = errno;
-  if (!written || !closed) {
-    std::remove(temp.c_str());
-    throw InputError(path + ": cannot write: " + std::strerror(err));
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    err = errno;
-    std::remove(temp.c_str());
-    throw InputError(path + ": cannot replace with the written file: " + std::strerror(err));
-  }
-}
 
 bool isBlank(char c) {
   return c == ' ' || c == '\t' || c == '\r';
@@ -138,7 +118,7 @@ void writeMesh(const MeshData& data, const std::string& path, const WriteOptions
       bytes = detail::serializePly(data, options.plyEncoding);
       break;
   }
-  writeWholeFile(path, bytes);
+  writeFileAtomically(path, bytes);
 }
 
 // === shared by the readers and writers

@@ -3,10 +3,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/io/file_write.h"
 
 namespace conformesh::intrinsic {
 
@@ -24,10 +25,8 @@ void writeVtk(const VtkMesh& mesh, const std::string& path) {
       if (v < 0 || static_cast<size_t>(v) >= n)
         throw InputError(describeAt(path, "triangle " + std::to_string(f) + " refers to point " + std::to_string(v) +
                                               " of " + std::to_string(n)));
-  const std::string tmp = path + ".tmp";
   {
-    std::ofstream out(tmp);
-    if (!out) throw InputError(describeAt(path, "cannot open for writing"));
+    std::ostringstream out;
     char buf[96];
     out << "# vtk DataFile Version 3.0\n" << mesh.title << "\nASCII\nDATASET POLYDATA\nPOINTS " << n << " double\n";
     for (const auto& p : mesh.points) {
@@ -48,11 +47,7 @@ void writeVtk(const VtkMesh& mesh, const std::string& path) {
         }
       }
     }
-    if (!out.flush()) throw InputError(describeAt(path, "write failed (disk full?)"));
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(describeAt(path, "cannot rename the temporary file into place"));
+    writeFileAtomically(path, out.str());
   }
 }
 

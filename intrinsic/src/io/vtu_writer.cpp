@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/io/file_write.h"
 
 namespace conformesh::intrinsic {
 
@@ -127,21 +129,9 @@ void writeBody(std::ostream& out, const VtkMesh& mesh, const std::vector<Eigen::
 
 void writeVtu(const VtkMesh& mesh, const std::string& path, const std::vector<Eigen::Vector2d>& chart) {
   validate(mesh, path, chart);
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw InputError(describeAt(path, "cannot open for writing"));
-    writeBody(out, mesh, chart);
-    if (!out.flush()) {
-      out.close();
-      std::remove(tmp.c_str());
-      throw InputError(describeAt(path, "write failed (disk full?)"));
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(describeAt(path, "cannot rename the temporary file into place"));
-  }
+  std::ostringstream out;
+  writeBody(out, mesh, chart);
+  writeFileAtomically(path, out.str());
 }
 
 }  // namespace conformesh::intrinsic

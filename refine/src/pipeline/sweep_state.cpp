@@ -1,6 +1,7 @@
 // sweep_state.cpp — atomic writes and the layout of a sweep's folder (see sweep_state.h).
 #include "conformesh/refine/pipeline/sweep_state.h"
 
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 #include <sstream>
 
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/io/file_write.h"
 
 namespace conformesh::refine {
 
@@ -38,22 +40,7 @@ bool isTemporaryName(const std::string& filename) {
 }
 
 void writeFileAtomically(const std::string& path, const std::string& content) {
-  const std::string tmp = temporaryNameFor(path);
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0) throw InputError(tmp + ": cannot open for writing (" + std::strerror(errno) + ")");
-  size_t done = 0;
-  while (done < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      ::close(fd);
-      throw InputError(tmp + ": write failed (" + std::strerror(errno) + ")");
-    }
-    done += static_cast<size_t>(n);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) throw InputError(tmp + ": cannot flush (" + std::strerror(errno) + ")");
-  if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw InputError(path + ": cannot rename " + tmp + " to it (" + std::strerror(errno) + ")");
+  intrinsic::writeFileAtomically(path, content, /*sync=*/true);  // a rerun trusts what is there
 }
 
 std::string SweepDir::caseDir(const std::string& id) const {

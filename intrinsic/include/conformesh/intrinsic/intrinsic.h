@@ -15,6 +15,7 @@
 #include "conformesh/intrinsic/flow/planar_layout.h"
 #include "conformesh/intrinsic/flow/ricci_flow.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/intrinsic/io/file_write.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/intrinsic/io/vtu_writer.h"
