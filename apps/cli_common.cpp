@@ -158,6 +158,16 @@ void rejectIfFailed(const refine::OutputVerification& check, const std::string& 
                                                            : " (written as " + keptPath + ")"));
 }
 
+void writeVerifiedMeshOutputs(const refine::OutputVerification& check, bool keepFailed, const intrinsic::MeshData& data,
+                              const std::string& path, bool ascii, const std::string& vtkPath,
+                              const std::function<intrinsic::VtkMesh()>& makeVtk, bool json, nlohmann::json& report) {
+  const std::string written = verifiedOutputPath(check, keepFailed, path, report);
+  if (!written.empty())
+    writeMeshOutputs(data, written, ascii, vtkPath.empty() || check.passed() ? vtkPath : refine::failedOutputName(vtkPath),
+                     makeVtk, report);
+  rejectIfFailed(check, path, written, json, report);
+}
+
 void printNotices(const std::vector<std::string>& notices) {
   for (const std::string& n : notices) std::fprintf(stderr, "conformesh: notice: %s\n", n.c_str());
 }

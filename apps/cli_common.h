@@ -86,6 +86,12 @@ void addCurvatureMeasureProperties(intrinsic::MeshData& data, const intrinsic::C
 void writeMeshOutputs(const intrinsic::MeshData& data, const std::string& path, bool ascii, const std::string& vtkPath,
                       const std::function<intrinsic::VtkMesh()>& makeVtk, nlohmann::json& report);
 
+// The end of every remesh: records `check` in `report`, writes the outputs as writeMeshOutputs does when it passed
+// (or, with `keepFailed`, under the failed names), then throws OutputRejected (exit 3) if it failed.
+void writeVerifiedMeshOutputs(const refine::OutputVerification& check, bool keepFailed, const intrinsic::MeshData& data,
+                              const std::string& path, bool ascii, const std::string& vtkPath,
+                              const std::function<intrinsic::VtkMesh()>& makeVtk, bool json, nlohmann::json& report);
+
 // Registers `--smoothing N` and `--smoothing-rule odt|centroid` (RefineOptions::smoothingPasses / smoothingRule) on
 // `sub`; `note` ends the --smoothing help line (where it applies), "" for none.
 void addSmoothingOptions(CLI::App* sub, int& passes, std::string& rule, const std::string& note);

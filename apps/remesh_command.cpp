@@ -117,13 +117,8 @@ void run(const RemeshArgs& a) {
     j["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);
   }
-  const refine::OutputVerification check = refine::verifyMetricRemesh(r);
-  const std::string written = verifiedOutputPath(check, a.keepFailed, a.output, j);
-  if (!written.empty())
-    writeMeshOutputs(
-        data, written, a.ascii, a.vtk.empty() || check.passed() ? a.vtk : refine::failedOutputName(a.vtk),
-        [&] { return refine::toVtkMesh(data, r); }, j);
-  rejectIfFailed(check, a.output, written, a.json, j);
+  writeVerifiedMeshOutputs(refine::verifyMetricRemesh(r), a.keepFailed, data, a.output, a.ascii, a.vtk,
+                           [&] { return refine::toVtkMesh(data, r); }, a.json, j);
   if (a.json) {
     printJson(j);
     return;

@@ -59,13 +59,8 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
     j["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);
   }
-  const refine::OutputVerification check = refine::verifyMeshRemesh(r, in.triangulation);
-  const std::string written = verifiedOutputPath(check, a.keepFailed, a.output, j);
-  if (!written.empty())
-    writeMeshOutputs(
-        data, written, a.ascii, a.vtk.empty() || check.passed() ? a.vtk : refine::failedOutputName(a.vtk),
-        [&] { return refine::toVtkMesh(data, r); }, j);
-  rejectIfFailed(check, a.output, written, a.json, j);
+  writeVerifiedMeshOutputs(refine::verifyMeshRemesh(r, in.triangulation), a.keepFailed, data, a.output, a.ascii, a.vtk,
+                           [&] { return refine::toVtkMesh(data, r); }, a.json, j);
   if (a.json) {
     printJson(j);
     return;

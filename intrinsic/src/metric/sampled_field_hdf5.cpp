@@ -238,18 +238,9 @@ void writeSampledFieldHdf5(const SampledField& f, const std::string& path, const
   if (f.nu <= 0 || f.nv <= 0 || f.guu.size() != static_cast<size_t>(f.nu) * f.nv || f.guv.size() != f.guu.size() ||
       f.gvv.size() != f.guu.size())
     throw InputError(path + ": cannot write a field whose sample count is not NU x NV");
-  Id file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-  if (!file.valid()) throw InputError(path + ": cannot create the HDF5 file");
-  const std::string where = path + (group == "/" ? "" : ":" + group);
-  hid_t g = file.get();
-  std::optional<Id> created;
-  if (group != "/") {
-    Id lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
-    H5Pset_create_intermediate_group(lcpl.get(), 1);
-    created.emplace(H5Gcreate2(file.get(), group.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-    if (!created->valid()) throw InputError(where + ": cannot create the group");
-    g = created->get();
-  }
+  hdf5_detail::NewFileGroup out(path, group);
+  const std::string& where = out.where;
+  const hid_t g = out.target();
   auto attribute = [&](const char* name, hid_t fileType, hid_t memType, hsize_t n, const void* data) {
     Id space(n == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr), H5Sclose);
     Id a(H5Acreate2(g, name, fileType, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
@@ -273,6 +264,7 @@ void writeSampledFieldHdf5(const SampledField& f, const std::string& path, const
     check(d.valid() ? H5Dwrite(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, in[k]->data()) : -1,
           where + ": cannot write dataset '" + std::string(kFieldNames[k]) + "'");
   }
+  out.commit();
 }
 
 }  // namespace conformesh::intrinsic

@@ -178,18 +178,9 @@ void writeSpatialMetricHdf5(const SpatialMetricGrid& g, const std::string& path,
                             const std::string& naming) {
   const auto& names = spatialMetricComponentNames(naming);
   const hdf5_detail::QuietErrors quiet;
-  Id file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-  if (!file.valid()) throw InputError(path + ": cannot create the HDF5 file");
-  const std::string where = path + (group == "/" ? "" : ":" + group);
-  hid_t target = file.get();
-  std::optional<Id> created;
-  if (group != "/") {
-    Id lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
-    H5Pset_create_intermediate_group(lcpl.get(), 1);
-    created.emplace(H5Gcreate2(file.get(), group.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-    if (!created->valid()) throw InputError(where + ": cannot create the group");
-    target = created->get();
-  }
+  hdf5_detail::NewFileGroup out(path, group);
+  const std::string& where = out.where;
+  const hid_t target = out.target();
   auto attributes = [&](hid_t obj) {
     for (const auto& [name, v] : {std::pair<const char*, Eigen::Vector3d>{"origin", g.origin}, {"delta", g.delta}}) {
       const hsize_t three = 3;
@@ -211,6 +202,7 @@ void writeSpatialMetricHdf5(const SpatialMetricGrid& g, const std::string& path,
       throw InputError(where + ": cannot write dataset '" + names[c] + "'");
     attributes(d.get());
   }
+  out.commit();
 }
 
 }  // namespace conformesh::intrinsic
