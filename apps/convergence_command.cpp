@@ -11,12 +11,12 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "usage_errors.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_families.h"
-#include "conformesh/refine/pipeline/remesh_json.h"
 #include "conformesh/refine/pipeline/convergence_study.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 #include "horizon_input.h"
+#include "usage_errors.h"
 
 namespace conformesh::apps {
 
@@ -57,6 +57,12 @@ std::vector<int> parseCounts(const std::string& list) {
   return out;
 }
 
+// The library's "convergence: what" as "what": the usage error's line names the command itself.
+std::string withoutCommand(const std::string& message) {
+  const std::string prefix = "convergence: ";
+  return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+}
+
 // Step 1 (parse): the study's options from the command line.
 refine::ConvergenceOptions studyOptions(const ConvergenceArgs& a) {
   refine::ConvergenceOptions o;
@@ -64,8 +70,8 @@ refine::ConvergenceOptions studyOptions(const ConvergenceArgs& a) {
     o.targetVertices = parseCounts(a.vertices);
   } else if (a.levels > 0) {
     // The first `levels` of the paper's Table 2 counts.
-    if (a.levels < 2 || a.levels > 11)
-      throw UsageError("--levels: expected 2 to 11, found " + std::to_string(a.levels));
+    if (a.levels < 3 || a.levels > 11)
+      throw UsageError("--levels: expected 3 to 11, found " + std::to_string(a.levels));
     o.targetVertices.resize(a.levels);
   }
   o.remesh.ratioBound = a.ratio;
@@ -75,6 +81,7 @@ refine::ConvergenceOptions studyOptions(const ConvergenceArgs& a) {
   o.remesh.refinement.smoothingRule = refine::parseSmoothingRule(a.smoothingRule);
   o.progress = [](const std::string& s) { progress(s); };
   o.extrinsic = true;  // used when the metric has an embedding
+  if (const std::string problem = o.validate(); !problem.empty()) throw UsageError(withoutCommand(problem));
   return o;
 }
 
@@ -206,9 +213,15 @@ void printStudy(const refine::ConvergenceStudy& study, const std::vector<std::st
 
 // parse → compute (refine::runConvergenceStudy) → write CSV, JSON, plots → print.
 void run(const ConvergenceArgs& a) {
-  const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetricOrHorizon("convergence", a.family, a.params, a.field, a.horizon);
+  const std::unique_ptr<intrinsic::SmoothMetric> metric =
+      loadMetricOrHorizon("convergence", a.family, a.params, a.field, a.horizon);
   const refine::ConvergenceOptions o = studyOptions(a);
-  const refine::ConvergenceStudy study = refine::runConvergenceStudy(*metric, o);
+  refine::ConvergenceStudy study;
+  try {
+    study = refine::runConvergenceStudy(*metric, o);
+  } catch (const refine::UnrefinedLevelError& e) {
+    throw UsageError(withoutCommand(e.what()));  // targets or --t0-resolution to change: exit status 2
+  }
 
   const std::string csvPath = a.prefix + ".csv", jsonPath = a.prefix + ".json";
   writeCsv(study, csvPath);
@@ -241,7 +254,7 @@ void registerConvergenceCommand(CLI::App& app) {
   addHorizonOptions(sub, a->horizon);
   sub->add_option("--param", a->params, "Family parameter key=value (repeatable)");
   sub->add_option("--vertices", a->vertices, "Target vertex counts, e.g. 1k,2k,4k,8k (default: the paper's Table 2)");
-  sub->add_option("--levels", a->levels, "Use the first N counts of the paper's Table 2 (2..11)");
+  sub->add_option("--levels", a->levels, "Use the first N counts of the paper's Table 2 (3..11)");
   sub->add_option("--ratio", a->ratio, "Shape bound B = circumradius / shortest edge (sqrt 2: 20.7 deg)")
       ->capture_default_str();
   sub->add_option("--t0-resolution", a->t0Resolution, "Resolution of T0, shared by all meshes")->capture_default_str();

@@ -170,7 +170,7 @@ void requireUsageError(const std::string& args, const std::string& what, const s
   const std::string first = r.err.substr(0, r.err.find('\n'));
   CHECK(first.find(what) != std::string::npos);
   CHECK(r.err.find("Run with --help") == std::string::npos);  // CLI11's own wording is replaced
-  CHECK(r.err.find("conformesh: hint: " ) != std::string::npos);
+  CHECK(r.err.find("conformesh: hint: ") != std::string::npos);
   CHECK(r.err.find(hint) != std::string::npos);
   CHECK(r.err.find("details: docs/cli.md") != std::string::npos);
 }
@@ -202,7 +202,12 @@ TEST_CASE("command-line errors are in the documented style with hints for the co
   }
   SECTION("a bad value (conversion) and a command's own check (UsageError)") {
     requireUsageError("refine x.ply --eps abc -o y.ply", "refine: Could not convert: --eps = abc", "refine --help");
-    requireUsageError("convergence sphere --levels 1", "convergence: --levels: expected 2 to 11, found 1",
+    requireUsageError("convergence sphere --levels 1", "convergence: --levels: expected 3 to 11, found 1",
+                      "docs/cli.md#convergence");
+    requireUsageError("convergence sphere --vertices 1k,2k", "convergence: give at least three target vertex counts",
+                      "docs/cli.md#convergence");
+    requireUsageError("convergence sphere --vertices 1k,1k,2k",
+                      "convergence: target vertex counts must increase: level 2's 1000 follows 1000",
                       "docs/cli.md#convergence");
   }
   CHECK_FALSE(std::filesystem::exists("never.ply"));

@@ -52,7 +52,7 @@ TEST_CASE("uniformize --method circle-packing --tolerance --max-steps on a torus
   CHECK(j["genus"] == 1);
   CHECK(j["newton_steps"].get<int>() <= 40);
   CHECK(j["max_curvature_residual"].get<double>() < 1e-9);  // the documented stopping rule max |K − K̂| < T
-  CHECK(j["flips"] == 0);                                  // circle packing does not flip (docs/cli.md)
+  CHECK(j["flips"] == 0);                                   // circle packing does not flip (docs/cli.md)
   // The written lengths are flat: every vertex (the torus has no boundary) has angle sum 2π to the tolerance.
   const IntrinsicTriangulation t = toTriangulation(readMesh(at("torus_cp.ply")));
   CHECK(worstInteriorAngleSum(t) < 1e-9);
@@ -99,8 +99,10 @@ TEST_CASE("uniformize --correspondence: the flip log's format, its faces and the
 
 TEST_CASE("convergence --vertices --ratio --t0-resolution --no-plot --json: the table, the bounds and R ~ V^(-1/2)") {
   const std::string prefix = at("conv");
-  const auto r = runConformesh("-q convergence sphere --vertices 300,600,1200 --ratio 1.6 --t0-resolution 6 "
-                               "--no-plot --json -o " + prefix);
+  const auto r = runConformesh(
+      "-q convergence sphere --vertices 300,600,1200 --ratio 1.6 --t0-resolution 6 "
+      "--no-plot --json -o " +
+      prefix);
   INFO(r.err);
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
@@ -128,14 +130,48 @@ TEST_CASE("convergence --vertices --ratio --t0-resolution --no-plot --json: the 
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 4);  // a header and one row per level
 }
 
-TEST_CASE("convergence --levels 2: the first two vertex counts of the paper's Table 2") {
-  const auto r = runConformesh("-q convergence sphere --levels 2 --no-plot --json -o " + at("conv2"));
+TEST_CASE("convergence --levels 3: the first three vertex counts of the paper's Table 2") {
+  const auto r = runConformesh("-q convergence sphere --levels 3 --no-plot --json -o " + at("conv3"));
   INFO(r.err);
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);
-  REQUIRE(j["levels"].size() == 2);
-  CHECK(j["levels"][0]["target_vertices"] == 1021);  // Li et al. 2013, Table 2: T1, T2
+  REQUIRE(j["levels"].size() == 3);
+  CHECK(j["levels"][0]["target_vertices"] == 1021);  // Li et al. 2013, Table 2: T1, T2, T3
   CHECK(j["levels"][1]["target_vertices"] == 2045);
+  CHECK(j["levels"][2]["target_vertices"] == 4093);
+}
+
+TEST_CASE("convergence refuses levels that repeat T0 (exit 2, the level and the fix) and the fix gives finer levels") {
+  // T0 at the default resolution 10 is the icosphere of 10·10² + 2 = 1002 vertices; refinement only adds vertices, so
+  // the targets 500 and 1k both give T0 itself: a fit over them would repeat a point. Nothing is written.
+  const std::string prefix = at("conv_repeat");
+  const std::string study = "-q convergence kerr-newman --param a=0.99 --vertices 500,1k,2k,4k --no-plot ";
+  const auto r = runConformesh(study + "-o " + prefix);
+  INFO(r.err);
+  CHECK(r.status == 2);
+  CHECK_THAT(r.err, Catch::StartsWith("conformesh: error: convergence: level 2 (target 1000 vertices) is not finer "
+                                      "than level 1: 1002 vertices"));
+  CHECK_THAT(r.err, Catch::Contains("T0, of 1002 vertices (resolution 10)"));
+  // The suggested T0: the finest icosphere of at most 500 / 2 vertices, resolution 4 (162); or targets ≥ 2·1002.
+  CHECK_THAT(r.err, Catch::Contains("--t0-resolution 4 (a T0 of 162 vertices") &&
+                        Catch::Contains("targets from 2004 vertices up"));
+  CHECK(!fs::exists(prefix + ".csv"));
+  CHECK(!fs::exists(prefix + ".json"));
+
+  const auto fixed = runConformesh(study + "--t0-resolution 4 --json -o " + prefix);
+  INFO(fixed.err);
+  REQUIRE(fixed.status == 0);
+  const auto j = nlohmann::json::parse(fixed.out);
+  CHECK(j["t0_vertices"] == 162);
+  REQUIRE(j["levels"].size() == 4);
+  for (int i = 1; i < 4; ++i) {  // every level strictly finer than the one before
+    const auto &L = j["levels"][i], &P = j["levels"][i - 1];
+    CHECK(L["vertices"].get<int>() > P["vertices"].get<int>());
+    CHECK(L["quality"]["mean_circumradius"].get<double>() < P["quality"]["mean_circumradius"].get<double>());
+  }
+  // Four distinct levels over a factor ~7 in V: mean R ~ V^(−1/2) within ±0.1, e_G of order ≥ 1 (Theorem 3.4).
+  CHECK(j["orders"]["mean_circumradius_vs_vertices"].get<double>() == Approx(-0.5).margin(0.1));
+  CHECK(j["orders"]["e_G_vs_mean_circumradius"].get<double>() >= 0.9);
 }
 
 TEST_CASE("generate --json, --perturb --seed and --ascii: counts, reproducible bytes, bounded perturbation") {
@@ -199,12 +235,13 @@ TEST_CASE("refine --boundary --off-centers --ascii, and --max-insertions stoppin
     }
     CHECK(maxR <= eps * (1 + 1e-9));
     CHECK(worstRatio <= B * (1 + 1e-9));
-    CHECK(std::abs(curvatureTotals(t).gaussBonnetResidual) <= conformesh::testing::gaussBonnetRoundoff(t.mesh.nFaces()));
+    CHECK(std::abs(curvatureTotals(t).gaussBonnetResidual) <=
+          conformesh::testing::gaussBonnetRoundoff(t.mesh.nFaces()));
     const auto j = nlohmann::json::parse(r.out);
     CHECK(j.dump().find("insert") != std::string::npos);
   }
-  const auto capped = runConformesh("-q refine " + at("disk.ply") + " --eps 0.02 --max-insertions 5 -o " +
-                                    at("disk_capped.ply"));
+  const auto capped =
+      runConformesh("-q refine " + at("disk.ply") + " --eps 0.02 --max-insertions 5 -o " + at("disk_capped.ply"));
   CHECK(capped.status == 1);
   CHECK(capped.err.find("5") != std::string::npos);
   CHECK(!fs::exists(at("disk_capped.ply")));

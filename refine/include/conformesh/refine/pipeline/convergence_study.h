@@ -11,6 +11,7 @@
 
 #include "conformesh/embedding/extrinsic/mean_curvature_measure.h"
 #include "conformesh/embedding/extrinsic/surface_projection.h"
+#include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
@@ -41,7 +42,8 @@ struct ConvergenceOptions {
   double calibrationTolerance = 0.15;
   std::function<void(const std::string&)> progress;
 
-  // What is wrong with these options ("" when valid): at least two target vertex counts, each at least 10.
+  // What is wrong with these options ("" when valid): at least three target vertex counts (a least-squares order over
+  // two points is just their slope), each at least 10, strictly increasing.
   std::string validate() const;
 };
 
@@ -64,7 +66,8 @@ struct ConvergenceStudy {
   intrinsic::UniformizationReport uniformization;
   int t0Vertices = 0;
   std::vector<ConvergenceLevel> levels;
-  // Least-squares slopes of the log–log data over all levels.
+  // Least-squares slopes of the log–log data over all levels, each strictly finer than the one before (more vertices
+  // and a smaller mean circumradius; runConvergenceStudy refuses a study where it is not, so no point repeats).
   double orderErrorVsCircumradius = 0;     // log e_G against log mean circumradius
   double orderCircumradiusVsVertices = 0;  // log mean circumradius against log vertices
   double orderAreaVsCircumradius = 0;      // log |area − smooth area| against log mean circumradius
@@ -76,7 +79,18 @@ struct ConvergenceStudy {
   double orderNormalDeviationVsCircumradius = 0;
 };
 
-// Runs the study. Throws InputError with options.validate()'s text, and what remeshUniformized throws.
+// The options' targets do not give a sequence of ever finer meshes (runConvergenceStudy): a mistake in the request,
+// which `conformesh convergence` reports as a usage error (exit status 2).
+class UnrefinedLevelError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+// Runs the study. Throws InputError with options.validate()'s text; UnrefinedLevelError when a level's mesh is not
+// finer than the previous level's (as many vertices or fewer, or a mean circumradius not smaller: targets near or below
+// T0's vertex count all give T0 itself), naming the level, its target, T0's vertex count and a fix (a coarser
+// --t0-resolution whose T0 has at most half the smallest target's vertices, or larger targets); and what
+// remeshUniformized throws.
 ConvergenceStudy runConvergenceStudy(const intrinsic::SmoothMetric& metric, const ConvergenceOptions& options = {});
 
 }  // namespace conformesh::refine
