@@ -38,7 +38,8 @@ ConvergenceResult convergence(const Metric& metric, const std::vector<int>& vert
   o.remesh.refinement.smoothingRule = refine::parseSmoothingRule(smoothingRule);
   o.extrinsic = extrinsic;
   const std::string invalid = o.validate();
-  if (!invalid.empty()) inputError("convergence: " + invalid);
+  if (!invalid.empty())  // validate() names the study itself in most of its messages
+    inputError(invalid.rfind("convergence: ", 0) == 0 ? invalid : "convergence: " + invalid);
   CallGuard guard(progress);
   o.progress = guard.lineCallback();
   o.measure.progress = guard.countCallback("curvature measure");
