@@ -109,61 +109,12 @@ void writeCsv(const refine::ConvergenceStudy& study, const std::string& csvPath)
   }
 }
 
-// One level of the JSON report.
-nlohmann::json levelJson(const refine::ConvergenceLevel& L, bool extrinsic, const refine::ConvergenceOptions& o) {
-  nlohmann::json level = {{"target_vertices", L.targetVertices},
-                          {"vertices", L.vertices},
-                          {"triangles", L.triangles},
-                          {"eps", L.epsilon},
-                          {"quality", refine::qualityJson(L.quality)},
-                          {"inverted_triangles", L.invertedTriangles},
-                          {"total_area", L.totalArea},
-                          {"gaussian_curvature_measure", refine::curvatureMeasureJson(L.measure, o.measure)},
-                          {"seconds", L.seconds}};
-  if (extrinsic)
-    level["extrinsic"] = {{"e_H", L.meanCurvature.meanAbsoluteError},
-                          {"max_abs_error", L.meanCurvature.maxAbsoluteError},
-                          {"mean_relative_error", L.meanCurvature.meanRelativeError},
-                          {"fraction_within", L.meanCurvature.fractionWithinBand},
-                          {"within_band", o.meanCurvature.withinBand},
-                          {"histogram_range", o.meanCurvature.histogramRange},
-                          {"histogram", L.meanCurvature.histogram},
-                          {"radius", L.meanCurvature.radius},
-                          {"discrete_total", L.meanCurvature.discreteTotal},
-                          {"smooth_total", L.meanCurvature.smoothTotal},
-                          {"hausdorff", L.deviation.hausdorffClosest},
-                          {"hausdorff_natural", L.deviation.hausdorffNatural},
-                          {"mean_distance", L.deviation.meanClosest},
-                          {"normal_deviation", L.deviation.normalDeviation},
-                          {"mean_normal_deviation", L.deviation.meanNormalDeviation},
-                          {"normal_deviation_natural", L.deviation.normalDeviationNatural},
-                          {"flipped_faces", L.deviation.flippedFaces}};
-  return level;
-}
-
-// Step 3b: the JSON report (written to PREFIX.json; printed, without the per-vertex errors, with --json).
-nlohmann::json studyJson(const refine::ConvergenceStudy& study, const ConvergenceArgs& a,
-                         const refine::ConvergenceOptions& o) {
-  nlohmann::json levels = nlohmann::json::array();
-  for (const auto& L : study.levels) levels.push_back(levelJson(L, study.extrinsic, o));
-  nlohmann::json j = {{"metric", study.metric},
-                      {"smooth_area", study.smoothArea},
-                      {"t0_vertices", study.t0Vertices},
-                      {"ratio_bound", a.ratio},
-                      {"smoothing_passes", a.smoothing},
-                      {"uniformization", refine::uniformizationJson(study.uniformization)},
-                      {"orders",
-                       {{"e_G_vs_mean_circumradius", study.orderErrorVsCircumradius},
-                        {"mean_circumradius_vs_vertices", study.orderCircumradiusVsVertices},
-                        {"area_error_vs_mean_circumradius", study.orderAreaVsCircumradius}}},
-                      {"levels", levels},
-                      {"finest_relative_errors", study.levels.back().measure.relativeError}};
-  if (study.extrinsic) {
-    j["orders"]["e_H_vs_mean_circumradius"] = study.orderMeanCurvatureVsCircumradius;
-    j["orders"]["hausdorff_vs_mean_circumradius"] = study.orderHausdorffVsCircumradius;
-    j["orders"]["normal_deviation_vs_mean_circumradius"] = study.orderNormalDeviationVsCircumradius;
-    j["finest_mean_curvature_relative_errors"] = study.levels.back().meanCurvature.relativeError;
-  }
+// Step 3b: the JSON report (written to PREFIX.json; printed, without the per-vertex errors, with --json): the
+// library's dict plus the finest level's per-vertex relative errors, which the plots draw.
+nlohmann::json studyJson(const refine::ConvergenceStudy& study, const refine::ConvergenceOptions& o) {
+  nlohmann::json j = refine::convergenceStudyJson(study, o);
+  j["finest_relative_errors"] = study.levels.back().measure.relativeError;
+  if (study.extrinsic) j["finest_mean_curvature_relative_errors"] = study.levels.back().meanCurvature.relativeError;
   return j;
 }
 
@@ -225,7 +176,7 @@ void run(const ConvergenceArgs& a) {
 
   const std::string csvPath = a.prefix + ".csv", jsonPath = a.prefix + ".json";
   writeCsv(study, csvPath);
-  nlohmann::json j = studyJson(study, a, o);
+  nlohmann::json j = studyJson(study, o);
   std::ofstream(jsonPath) << j.dump(1) << '\n';
   std::vector<std::string> written = {csvPath, jsonPath};
   if (!a.noPlot)

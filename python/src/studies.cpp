@@ -52,19 +52,9 @@ ConvergenceResult convergence(const Metric& metric, const std::vector<int>& vert
     py::gil_scoped_release release;
     s = refine::runConvergenceStudy(*metric.metric, o);
   }
-  // Rows: the columns of the CLI's CSV and the levels of its JSON (apps/convergence_command.cpp).
-  nlohmann::json levels = nlohmann::json::array();
+  // Rows: the columns of the CLI's CSV; the report: its JSON (refine/pipeline/remesh_json.h).
   py::list rows;
   for (const auto& L : s.levels) {
-    nlohmann::json level = {{"target_vertices", L.targetVertices},
-                            {"vertices", L.vertices},
-                            {"triangles", L.triangles},
-                            {"eps", L.epsilon},
-                            {"quality", refine::qualityJson(L.quality)},
-                            {"inverted_triangles", L.invertedTriangles},
-                            {"total_area", L.totalArea},
-                            {"gaussian_curvature_measure", refine::curvatureMeasureJson(L.measure, o.measure)},
-                            {"seconds", L.seconds}};
     nlohmann::json row = {{"target_vertices", L.targetVertices},
                           {"vertices", L.vertices},
                           {"triangles", L.triangles},
@@ -84,29 +74,11 @@ ConvergenceResult convergence(const Metric& metric, const std::vector<int>& vert
       row["e_H"] = L.meanCurvature.meanAbsoluteError;
       row["hausdorff"] = L.deviation.hausdorffClosest;
       row["normal_deviation"] = L.deviation.normalDeviation;
-      level["extrinsic"] = {{"e_H", L.meanCurvature.meanAbsoluteError},
-                            {"hausdorff", L.deviation.hausdorffClosest},
-                            {"normal_deviation", L.deviation.normalDeviation}};
     }
     rows.append(toPython(row));
-    levels.push_back(level);
   }
-  nlohmann::json orders = {{"e_G_vs_mean_circumradius", s.orderErrorVsCircumradius},
-                           {"mean_circumradius_vs_vertices", s.orderCircumradiusVsVertices},
-                           {"area_error_vs_mean_circumradius", s.orderAreaVsCircumradius}};
-  if (s.extrinsic) {
-    orders["e_H_vs_mean_circumradius"] = s.orderMeanCurvatureVsCircumradius;
-    orders["hausdorff_vs_mean_circumradius"] = s.orderHausdorffVsCircumradius;
-    orders["normal_deviation_vs_mean_circumradius"] = s.orderNormalDeviationVsCircumradius;
-  }
-  nlohmann::json j = {{"metric", s.metric},
-                      {"smooth_area", s.smoothArea},
-                      {"t0_vertices", s.t0Vertices},
-                      {"ratio_bound", ratio},
-                      {"smoothing_passes", o.remesh.refinement.smoothingPasses},
-                      {"uniformization", refine::uniformizationJson(s.uniformization)},
-                      {"orders", orders},
-                      {"levels", levels}};
+  const nlohmann::json j = refine::convergenceStudyJson(s, o);
+  const nlohmann::json& orders = j["orders"];
   return {rows, toPython(orders), toPython(j)};
 }
 

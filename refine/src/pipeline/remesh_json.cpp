@@ -199,6 +199,59 @@ nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c
           {"gauss_bonnet", c.boundaryLoops == 0 ? nlohmann::json(2 * M_PI * c.eulerCharacteristic) : nlohmann::json(nullptr)}};
 }
 
+nlohmann::json convergenceLevelJson(const ConvergenceLevel& L, bool extrinsic, const ConvergenceOptions& o) {
+  nlohmann::json level = {{"target_vertices", L.targetVertices},
+                          {"vertices", L.vertices},
+                          {"triangles", L.triangles},
+                          {"eps", L.epsilon},
+                          {"quality", qualityJson(L.quality)},
+                          {"inverted_triangles", L.invertedTriangles},
+                          {"total_area", L.totalArea},
+                          {"gaussian_curvature_measure", curvatureMeasureJson(L.measure, o.measure)},
+                          {"seconds", L.seconds}};
+  if (extrinsic)
+    level["extrinsic"] = {{"e_H", L.meanCurvature.meanAbsoluteError},
+                          {"max_abs_error", L.meanCurvature.maxAbsoluteError},
+                          {"mean_relative_error", L.meanCurvature.meanRelativeError},
+                          {"fraction_within", L.meanCurvature.fractionWithinBand},
+                          {"within_band", o.meanCurvature.withinBand},
+                          {"histogram_range", o.meanCurvature.histogramRange},
+                          {"histogram", L.meanCurvature.histogram},
+                          {"radius", L.meanCurvature.radius},
+                          {"discrete_total", L.meanCurvature.discreteTotal},
+                          {"smooth_total", L.meanCurvature.smoothTotal},
+                          {"hausdorff", L.deviation.hausdorffClosest},
+                          {"hausdorff_natural", L.deviation.hausdorffNatural},
+                          {"mean_distance", L.deviation.meanClosest},
+                          {"normal_deviation", L.deviation.normalDeviation},
+                          {"mean_normal_deviation", L.deviation.meanNormalDeviation},
+                          {"normal_deviation_natural", L.deviation.normalDeviationNatural},
+                          {"flipped_faces", L.deviation.flippedFaces}};
+  return level;
+}
+
+nlohmann::json convergenceStudyJson(const ConvergenceStudy& study, const ConvergenceOptions& o) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (const auto& L : study.levels) levels.push_back(convergenceLevelJson(L, study.extrinsic, o));
+  nlohmann::json j = {{"metric", study.metric},
+                      {"smooth_area", study.smoothArea},
+                      {"t0_vertices", study.t0Vertices},
+                      {"ratio_bound", o.remesh.ratioBound},
+                      {"smoothing_passes", o.remesh.refinement.smoothingPasses},
+                      {"uniformization", uniformizationJson(study.uniformization)},
+                      {"orders",
+                       {{"e_G_vs_mean_circumradius", study.orderErrorVsCircumradius},
+                        {"mean_circumradius_vs_vertices", study.orderCircumradiusVsVertices},
+                        {"area_error_vs_mean_circumradius", study.orderAreaVsCircumradius}}},
+                      {"levels", levels}};
+  if (study.extrinsic) {
+    j["orders"]["e_H_vs_mean_circumradius"] = study.orderMeanCurvatureVsCircumradius;
+    j["orders"]["hausdorff_vs_mean_circumradius"] = study.orderHausdorffVsCircumradius;
+    j["orders"]["normal_deviation_vs_mean_circumradius"] = study.orderNormalDeviationVsCircumradius;
+  }
+  return j;
+}
+
 nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMetric& metric,
                                 const RemeshOptions& o) {
   return {{"metric", metric.description()},

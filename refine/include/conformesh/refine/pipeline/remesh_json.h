@@ -14,6 +14,7 @@
 #include "conformesh/intrinsic/metric/smooth_metric.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
+#include "conformesh/refine/pipeline/convergence_study.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
 #include "conformesh/refine/pipeline/output_verification.h"
@@ -61,6 +62,14 @@ nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c
 // min_polar_circumference, circumference_ratio, spin (null outside Kerr's range), curves.
 nlohmann::json horizonJson(const intrinsic::SmoothMetric& metric, double meshArea,
                            const intrinsic::HorizonDiagnosticsOptions& options = {});
+
+// One level of `convergence --json`: target_vertices, vertices, triangles, eps, quality, inverted_triangles,
+// total_area, gaussian_curvature_measure, seconds; with `extrinsic` also the e_H, Hausdorff and normal-deviation
+// figures ("extrinsic").
+nlohmann::json convergenceLevelJson(const ConvergenceLevel& level, bool extrinsic, const ConvergenceOptions& options);
+// The dict of `convergence --json` without the finest level's per-vertex errors: metric, smooth_area, t0_vertices,
+// ratio_bound, smoothing_passes, uniformization, orders (the fitted log-log slopes), levels.
+nlohmann::json convergenceStudyJson(const ConvergenceStudy& study, const ConvergenceOptions& options);
 
 // The dict of `remesh FAMILY --json` (without "output" / "vtk", and without "gaussian_curvature_measure", which the
 // caller adds when it ran the check): metric, eps, ratio_bound, smoothing_passes, segment_rule, t0, uniformization,
