@@ -1,7 +1,7 @@
 // More end-to-end tests of CLI options that no other test passed (found by scripts/cli_option_coverage.py, CTest
 // cli_option_coverage): the global --quiet; `generate` icosphere/disk --radius, annulus --r1 --r2, flat-torus
 // --omega1 --omega2 --keep-basis, torus --alternate; `layout --centre-vertex --direction-vertex --pixels`; `view
-// --vtu`; `repair --merge-tolerance`; `discretize --chart-lengths`. Each
+// --vtu`; `repair --merge-tolerance --area-tolerance`; `generate genus --cell`; `discretize --chart-lengths`. Each
 // case checks a closed form or a documented property of the output, not only the exit status.
 #include <catch2/catch.hpp>
 
@@ -192,4 +192,34 @@ TEST_CASE("discretize --chart-lengths: chart-curve lengths, never shorter than t
   INFO("relative: max shortfall " << shortfall << ", max excess " << excess);
   CHECK(shortfall < 1e-9);  // the quadrature's and GeographicLib's tolerances (docs/metrics.md), well above round-off
   CHECK(excess > 1e-6);
+}
+
+TEST_CASE("repair --area-tolerance: a sliver of area/longest² ≈ 9e-5 is kept at the default 1e-12, dropped at 1e-3") {
+  // Face (0,0,0), (1,1,0), (2,2,1e-3): area |(1,1,0) × (2,2,1e-3)|/2 = 1e-3/√2, longest side² 8: ratio 8.8e-5.
+  {
+    std::ofstream f(at("sliver.off"));
+    f << "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 1e-3\n3 0 1 2\n3 1 3 2\n3 0 3 4\n";
+  }
+  for (bool dropped : {false, true}) {
+    INFO(dropped ? "--area-tolerance 1e-3" : "default --area-tolerance (1e-12)");
+    const auto r = runConformesh("repair " + at("sliver.off") + " -o " + at("sliver-out.off") + " --json" +
+                                 (dropped ? " --area-tolerance 1e-3" : ""));
+    REQUIRE(r.status == 0);
+    CHECK(nlohmann::json::parse(r.out)["degenerate_faces"]["count"] == (dropped ? 1 : 0));
+    CHECK(readMesh(at("sliver-out.off")).faces.size() == (dropped ? 2u : 3u));
+  }
+}
+
+TEST_CASE("generate genus --cell scales the surface: area × cell², shortest edge cell / resolution") {
+  auto info = [&](const std::string& extra, const std::string& name) {
+    REQUIRE(runConformesh("generate genus " + extra + " -o " + at(name)).status == 0);
+    const auto r = runConformesh("info " + at(name) + " --json");
+    REQUIRE(r.status == 0);
+    return nlohmann::json::parse(r.out);
+  };
+  const auto one = info("", "g1.off"), two = info("--cell 2.5", "g2.off");
+  CHECK(two["total_area"].get<double>() == Approx(6.25 * one["total_area"].get<double>()).epsilon(1e-12));
+  CHECK(one["min_edge_length"].get<double>() == Approx(1.0 / 8).epsilon(1e-12));  // default resolution 8
+  CHECK(two["min_edge_length"].get<double>() == Approx(2.5 / 8).epsilon(1e-12));
+  CHECK(two["genus"] == 2);
 }
