@@ -201,7 +201,7 @@ TEST_CASE("repair --area-tolerance: a sliver of area/longest² ≈ 9e-5 is kept 
     f << "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 1e-3\n3 0 1 2\n3 1 3 2\n3 0 3 4\n";
   }
   for (bool dropped : {false, true}) {
-    INFO(dropped ? "--area-tolerance 1e-3" : "default --area-tolerance (1e-12)");
+    INFO((dropped ? "--area-tolerance 1e-3" : "default --area-tolerance (1e-12)"));
     const auto r = runConformesh("repair " + at("sliver.off") + " -o " + at("sliver-out.off") + " --json" +
                                  (dropped ? " --area-tolerance 1e-3" : ""));
     REQUIRE(r.status == 0);
