@@ -106,3 +106,81 @@ TEST_CASE("killing vector: Kerr horizons (Smarr) — λ → 0 at order 2, poles 
     if (chi == 0.9) CHECK(fitLogLogSlope({h[0], h[1], h[2]}, cerr) > 1.8);
   }
 }
+
+TEST_CASE("killing vector: the Kerr–Schild horizon spheroid and a chart rotated against the spin") {
+  const double chi = 0.9, rp = 1 + std::sqrt(1 - chi * chi), A2 = rp * rp + chi * chi, C2 = rp * rp;
+  const Strahlkorper shape = fitStrahlkorper(
+      [&](double t, double) { return 1 / std::sqrt(std::pow(std::sin(t), 2) / A2 + std::pow(std::cos(t), 2) / C2); },
+      16, Eigen::Vector3d::Zero());
+  const HorizonSurfaceMetric ks(shape, std::make_shared<KerrSchildMetric>(1, chi, Eigen::Vector3d::Zero()));
+  const Sampled s = sample(ks, 16);
+  const KillingVectorResult r = approximateKillingVector(s.tri);
+  REQUIRE_FALSE(r.degenerate);
+  // Discretization error of the same O(h²) size as Smarr's chart at N = 16 (1.6e-3 there, 3.2e-3 measured here: this
+  // chart's mesh is coarser at the poles, where the spheroid's r is larger); a non-Killing surface gives 0.03 (below).
+  CHECK(std::abs(r.scaledEigenvalues[0]) < 5e-3);
+  for (int v : {r.northVertex, r.southVertex})
+    CHECK(angleToAxis(refinedExtremum(s.tri, r.potential, v, s.reference), Eigen::Vector3d::UnitZ()) < 1e-6);
+  CHECK(r.longestOrbit == Approx(4 * M_PI).epsilon(1e-4));  // O(h²): 3.5e-5 absolute for Smarr at N = 16
+
+  // Smarr's metric seen through a rotation of the sphere: the axis sits at ±Rᵀe_z, which is no mesh vertex.
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 0.3, 0).normalized()).toRotationMatrix();
+  const RotatedChartMetric rotated(std::make_shared<KerrNewmanMetric>(1, chi, 0), R);
+  const Eigen::Vector3d axis = R.transpose() * Eigen::Vector3d::UnitZ();
+  for (int N : {8, 16}) {
+    const Sampled t = sample(rotated, N);
+    const KillingVectorResult q = approximateKillingVector(t.tri);
+    REQUIRE_FALSE(q.degenerate);
+    const double spacing = 1.1 / N;  // icosahedral frequency N: edges subtend ≈ 1.1/N rad
+    for (int v : {q.northVertex, q.southVertex}) {
+      const double vertexAngle = angleToAxis(t.reference[v], axis);
+      const double refinedAngle = angleToAxis(refinedExtremum(t.tri, q.potential, v, t.reference), axis);
+      INFO("N " << N << " vertex " << vertexAngle << " refined " << refinedAngle);
+      CHECK(vertexAngle < spacing);         // the extremal vertex is the nearest or next-nearest to the axis
+      CHECK(refinedAngle < 0.1 * spacing);  // measured 0.012 (N = 8) and 0.004 (N = 16) of the spacing
+    }
+    CHECK(q.longestOrbit == Approx(4 * M_PI).epsilon(N == 8 ? 5e-3 : 1e-3));  // measured 1.8e-3, 4.7e-4
+  }
+}
+
+TEST_CASE("killing vector: a triaxial ellipsoid has no Killing vector; the round sphere has three") {
+  // Ellipsoid with semi-axes 1.2, 1, 0.8 (flat space, Strahlkörper fitted at l_max = 16).
+  const Strahlkorper tri = fitStrahlkorper(
+      [&](double t, double p) {
+        const double st = std::sin(t);
+        return 1 / std::sqrt(std::pow(st * std::cos(p) / 1.2, 2) + std::pow(st * std::sin(p), 2) +
+                             std::pow(std::cos(t) / 0.8, 2));
+      },
+      16, Eigen::Vector3d::Zero());
+  const HorizonSurfaceMetric ellipsoid(tri, std::make_shared<FlatSpatialMetric>());
+  // λ̂₁ = 0.024 (N = 8), 0.0325 (N = 16); Richardson (order 2) 0.035: bounded away from 0, while a Kerr horizon's
+  // λ̂₁ at N = 16 is −1.6e-3 — twenty times smaller.
+  CHECK(approximateKillingVector(sample(ellipsoid, 16).tri).scaledEigenvalues[0] > 0.02);
+
+  KillingVectorOptions o;
+  o.modes = 4;
+  const KillingVectorResult r = approximateKillingVector(sample(RoundSphereMetric(2), 16).tri, o);
+  CHECK(r.degenerate);
+  CHECK(r.northVertex == -1);
+  CHECK(std::isnan(r.longestOrbit));
+  for (int k = 0; k < 3; ++k) CHECK(std::abs(r.scaledEigenvalues[k]) < 5e-3);  // 0 up to O(h²)
+  // The next eigenvalue is l = 2's: λ = l(l+1) − 2 = 4 in units of 1/r² (docs/horizons.md §4d).
+  CHECK(r.scaledEigenvalues[3] == Approx(4).epsilon(0.02));
+  // An irregular mesh of the round sphere (icosphere with jittered vertices): the triple splits by O(h²)·0.05 and is
+  // still reported degenerate.
+  IcosphereOptions io;
+  io.level = 4;
+  MeshData d = makeIcosphere(io);
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (auto& x : d.positions) x = (x + 0.25 * 1.1 / 16 * Eigen::Vector3d(u(gen), u(gen), u(gen))).normalized();
+  CHECK(approximateKillingVector(toTriangulation(d)).degenerate);
+}
+
+TEST_CASE("killing vector: bad input is named") {
+  CHECK_THROWS_WITH(approximateKillingVector(toTriangulation(makeTorus())), Catch::Contains("genus-0"));
+  KillingVectorOptions o;
+  o.modes = 0;
+  CHECK_THROWS_WITH(approximateKillingVector(toTriangulation(makeIcosphere()), o), Catch::Contains("modes"));
+  CHECK_THROWS_AS(levelSetLength(toTriangulation(makeIcosphere()), {1.0, 2.0}, 0.5), InputError);
+}
