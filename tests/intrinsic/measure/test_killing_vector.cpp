@@ -83,9 +83,6 @@ TEST_CASE("killing vector: Kerr horizons (Smarr) — λ → 0 at order 2, poles 
       const KillingVectorResult r = approximateKillingVector(s.tri);
       INFO("chi " << chi << " N " << N << " lambda-hat " << r.scaledEigenvalues[0] << ", " << r.scaledEigenvalues[1]
                   << " degenerate " << r.degenerate << " C - 4pi " << r.longestOrbit - 4 * M_PI << " spin " << r.spin);
-      WARN("chi " << chi << " N " << N << " lambda-hat " << r.scaledEigenvalues[0] << ", " << r.scaledEigenvalues[1]
-                  << " degenerate " << r.degenerate << " C - 4pi " << r.longestOrbit - 4 * M_PI << " mid "
-                  << r.midLevelCircumference - 4 * M_PI << " spin " << r.spin << " it " << r.iterations);
       h.push_back(1.0 / N);
       lam.push_back(std::abs(r.scaledEigenvalues[0]));
       // a/M = 0.3: the second mode (a rotation about an equatorial axis) has λ̂₂ ≈ 1e-3, resolved from N = 16 on.
