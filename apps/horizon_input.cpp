@@ -47,6 +47,12 @@ void printHorizonReport(const nlohmann::json& h) {
                 h["circumference_ratio"].get<double>());
   else
     std::printf("  %-34s %.9f\n", "spin from C_polar/C_eq", h["spin"].get<double>());
+  if (h.contains("killing") && h["killing"].contains("degenerate"))  // killingJson (remesh_json.h)
+    std::printf("  %-34s lambda*A/4pi %.3g%s, C_eq %s, spin %s\n", "approximate Killing vector",
+                h["killing"]["scaled_eigenvalues"][0].get<double>(),
+                h["killing"]["degenerate"].get<bool>() ? " (degenerate: no single axis)" : "",
+                h["killing"]["equatorial_circumference_killing"].dump().c_str(),
+                h["killing"]["spin_from_killing"].dump().c_str());
 }
 
 }  // namespace conformesh::apps

@@ -106,7 +106,11 @@ void run(const RemeshArgs& a) {
   printNotices(r.notices);
 
   nlohmann::json j = refine::metricRemeshJson(r, *metric, o);
-  if (a.horizon.given()) j["horizon"] = horizonReportJson(*metric, intrinsic::totalArea(r.mesh));
+  if (a.horizon.given()) {
+    j["horizon"] = horizonReportJson(*metric, intrinsic::totalArea(r.mesh));
+    progress("approximate Killing vector on the output mesh (axis, orbits)");
+    j["horizon"]["killing"] = refine::killingJson(r.mesh, r.reference, metric->domain());
+  }
   if (!a.noCheck) {
     progress("checking the Gaussian curvature measure on " + std::to_string(r.mesh.mesh.nVertices()) + " balls");
     intrinsic::CurvatureMeasureOptions co;

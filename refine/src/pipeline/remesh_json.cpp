@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
 
@@ -323,6 +324,41 @@ nlohmann::json horizonJson(const intrinsic::SmoothMetric& metric, double meshAre
           {"circumference_ratio", d.circumferenceRatio},
           {"spin", std::isfinite(d.spin) ? nlohmann::json(d.spin) : nlohmann::json(nullptr)},
           {"curves", "smooth metric, chart equator and polar great circles"}};
+}
+
+namespace {
+
+nlohmann::json finiteOrNull(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+nlohmann::json poleJson(const intrinsic::IntrinsicTriangulation& mesh, const intrinsic::KillingVectorResult& k, int v,
+                        const std::vector<Eigen::Vector3d>& reference, const intrinsic::ChartDomain& domain) {
+  const Eigen::Vector2d uv = intrinsic::chartPoint(domain, intrinsic::refinedExtremum(mesh, k.potential, v, reference));
+  return {{"vertex", v}, {"u", uv[0]}, {"v", uv[1]}};
+}
+
+}  // namespace
+
+nlohmann::json killingJson(const intrinsic::IntrinsicTriangulation& mesh, const std::vector<Eigen::Vector3d>& reference,
+                           const intrinsic::ChartDomain& domain, const intrinsic::KillingVectorOptions& options) {
+  intrinsic::KillingVectorResult k;
+  try {
+    k = intrinsic::approximateKillingVector(mesh, options);
+  } catch (const ConvergenceError& e) {
+    return {{"error", e.what()}};
+  }
+  nlohmann::json j = {{"eigenvalue", k.eigenvalues[0]},
+                      {"scaled_eigenvalues", k.scaledEigenvalues},
+                      {"degenerate", k.degenerate},
+                      {"north_pole", nullptr},
+                      {"south_pole", nullptr},
+                      {"equatorial_circumference_killing", finiteOrNull(k.longestOrbit)},
+                      {"mid_level_circumference", finiteOrNull(k.midLevelCircumference)},
+                      {"spin_from_killing", finiteOrNull(k.spin)}};
+  if (!k.degenerate) {
+    j["north_pole"] = poleJson(mesh, k, k.northVertex, reference, domain);
+    j["south_pole"] = poleJson(mesh, k, k.southVertex, reference, domain);
+  }
+  return j;
 }
 
 }  // namespace conformesh::refine

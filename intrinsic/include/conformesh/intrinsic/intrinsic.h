@@ -22,6 +22,7 @@
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/measure/horizon_diagnostics.h"
+#include "conformesh/intrinsic/measure/killing_vector.h"
 #include "conformesh/intrinsic/measure/smooth_reference.h"
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/from_edge_lengths.h"

@@ -3,7 +3,8 @@
 // equator θ = π/2 and of its polar great circles (meridian φ₀ through both poles and back along φ₀ + π), and the
 // dimensionless spin χ = a/M obtained by inverting Kerr's polar-to-equatorial circumference ratio (exact for Kerr).
 // The curves are measured on the SMOOTH metric (periodic trapezoidal rule: spectral for a smooth metric), not on a
-// triangulation. Derivation of the Kerr relation: docs/horizons.md §4.
+// triangulation. Derivation of the Kerr relation: docs/horizons.md §4. The rotation axis and the orbits of an
+// approximate Killing vector, from a triangulation's edge lengths alone, are in killing_vector.h (§4d).
 #pragma once
 
 #include <string>

@@ -9,6 +9,7 @@
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/measure/horizon_diagnostics.h"
+#include "conformesh/intrinsic/measure/killing_vector.h"
 #include "conformesh/intrinsic/measure/smooth_reference.h"
 #include "conformesh/intrinsic/mesh/mesh_summary.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
@@ -62,6 +63,14 @@ nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c
 // min_polar_circumference, circumference_ratio, spin (null outside Kerr's range), curves.
 nlohmann::json horizonJson(const intrinsic::SmoothMetric& metric, double meshArea,
                            const intrinsic::HorizonDiagnosticsOptions& options = {});
+// The "killing" dict inside "horizon" (killing_vector.h on the output triangulation T1, from its edge lengths alone):
+// eigenvalue (λ₁, 1/length²), scaled_eigenvalues (λ_k·A/4π, k = 1..3), degenerate, and unless degenerate north_pole /
+// south_pole ({vertex, u, v}: the extremal vertices of z refined on `reference`, in the chart (u, v) = (φ, θ)),
+// equatorial_circumference_killing (the longest orbit), mid_level_circumference and spin_from_killing
+// (χ = √(1 − (2πA/C² − 1)²), null outside Kerr's range); null entries when degenerate. A subspace iteration that does
+// not converge gives {"error": message} instead of failing the command.
+nlohmann::json killingJson(const intrinsic::IntrinsicTriangulation& mesh, const std::vector<Eigen::Vector3d>& reference,
+                           const intrinsic::ChartDomain& domain, const intrinsic::KillingVectorOptions& options = {});
 
 // One level of `convergence --json`: target_vertices, vertices, triangles, eps, quality, inverted_triangles,
 // total_area, gaussian_curvature_measure, seconds; with `extrinsic` also the e_H, Hausdorff and normal-deviation
