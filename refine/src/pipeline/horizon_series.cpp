@@ -137,6 +137,7 @@ const std::vector<std::string>& columns() {
   static const std::vector<std::string> c = {
       "step", "file", "time", "time_source", "status", "error_kind", "error", "vertices", "area", "mesh_area",
       "irreducible_mass", "equatorial_circumference", "polar_circumference", "spin", "total_curvature",
+      "smooth_total_curvature",
       "gauss_bonnet_residual", "e_G", "min_angle_deg", "wall_seconds", "id"};
   return c;
 }
@@ -160,7 +161,8 @@ json rowOf(size_t k, const HorizonStep& s, const SweepCase& c, const std::option
   row["equatorial_circumference"] = at(*r, {"horizon", "equatorial_circumference"});
   row["polar_circumference"] = at(*r, {"horizon", "polar_circumference"});
   row["spin"] = at(*r, {"horizon", "spin"});
-  row["total_curvature"] = at(*r, {"quality", "total_curvature"});
+  row["total_curvature"] = at(*r, {"smooth_reference", "mesh_total_curvature"});
+  row["smooth_total_curvature"] = at(*r, {"smooth_reference", "smooth_total_curvature"});
   row["gauss_bonnet_residual"] = at(*r, {"quality", "gauss_bonnet_residual"});
   row["e_G"] = at(*r, {"gaussian_curvature_measure", "mean_abs_error"});
   row["min_angle_deg"] = at(*r, {"quality", "min_angle_deg"});

@@ -44,7 +44,8 @@ SweepSpec horizonSeriesSpec(const std::vector<HorizonStep>& steps, const Horizon
 
 // The table: one row per step, in series order, from the records in `dir` — step, file, time, time_source, status,
 // error, error_kind, vertices, area (smooth metric), mesh_area, irreducible_mass, equatorial_circumference,
-// polar_circumference, spin, total_curvature (∫K dA of the mesh, angle deficits), gauss_bonnet_residual, e_G (mean
+// polar_circumference, spin, total_curvature (∫K dA of the mesh, its angle deficits), smooth_total_curvature (∫K dA of
+// the smooth metric by quadrature), gauss_bonnet_residual, e_G (mean
 // |error| of the curvature measure, null without the check), min_angle_deg, wall_seconds, id. A step without a
 // record has status "missing".
 nlohmann::json horizonSeriesRows(const std::vector<HorizonStep>& steps, const SweepSpec& spec, const std::string& dir);
