@@ -106,7 +106,7 @@ SweepSpec horizonSeriesSpec(const std::vector<HorizonStep>& steps, const Horizon
     char name[32];
     std::snprintf(name, sizeof name, "step%04zu", k);
     studies.push_back({{"name", name},
-                       {"input", fs::absolute(steps[k].file).string()},
+                       {"input", fs::path(steps[k].file).filename().string()},  // relative to the folder
                        {"eps", o.epsilon},
                        {"options", {{"no-check", !o.check}}}});
   }
@@ -135,10 +135,10 @@ json at(const json& j, std::initializer_list<const char*> path) {
 
 const std::vector<std::string>& columns() {
   static const std::vector<std::string> c = {
-      "step", "file", "time", "time_source", "status", "error_kind", "error", "vertices", "area", "mesh_area",
+      "step", "file", "time", "time_source", "status", "error_kind", "vertices", "area", "mesh_area",
       "irreducible_mass", "equatorial_circumference", "polar_circumference", "spin", "total_curvature",
       "smooth_total_curvature",
-      "gauss_bonnet_residual", "e_G", "min_angle_deg", "wall_seconds", "id"};
+      "gauss_bonnet_residual", "e_G", "min_angle_deg", "wall_seconds", "id", "error"};  // free text last
   return c;
 }
 
@@ -154,6 +154,12 @@ json rowOf(size_t k, const HorizonStep& s, const SweepCase& c, const std::option
   row["status"] = (*r)["status"];
   row["error_kind"] = at(*r, {"error_kind"});
   row["error"] = at(*r, {"error"});
+  if (row["error"].is_string()) {  // the sweep resolved the file against the folder: name it as the user did
+    std::string e = row["error"];
+    for (size_t p = 0; (p = e.find(c.input, p)) != std::string::npos; p += s.file.size())
+      e.replace(p, c.input.size(), s.file);
+    row["error"] = e;
+  }
   row["vertices"] = at(*r, {"quality", "vertices"});
   row["area"] = at(*r, {"horizon", "area"});
   row["mesh_area"] = at(*r, {"horizon", "mesh_area"});

@@ -43,10 +43,10 @@ std::vector<HorizonStep> listHorizonSteps(const std::string& folder);
 SweepSpec horizonSeriesSpec(const std::vector<HorizonStep>& steps, const HorizonSeriesOptions& options);
 
 // The table: one row per step, in series order, from the records in `dir` — step, file, time, time_source, status,
-// error, error_kind, vertices, area (smooth metric), mesh_area, irreducible_mass, equatorial_circumference,
+// error_kind, vertices, area (smooth metric), mesh_area, irreducible_mass, equatorial_circumference,
 // polar_circumference, spin, total_curvature (∫K dA of the mesh, its angle deficits), smooth_total_curvature (∫K dA of
-// the smooth metric by quadrature), gauss_bonnet_residual, e_G (mean
-// |error| of the curvature measure, null without the check), min_angle_deg, wall_seconds, id. A step without a
+// the smooth metric by quadrature), gauss_bonnet_residual, e_G (mean |error| of the curvature measure, null without
+// the check), min_angle_deg, wall_seconds, id, error (free text last, the file named as listed). A step without a
 // record has status "missing".
 nlohmann::json horizonSeriesRows(const std::vector<HorizonStep>& steps, const SweepSpec& spec, const std::string& dir);
 
