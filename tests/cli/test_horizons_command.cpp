@@ -127,6 +127,16 @@ TEST_CASE("horizons: ten Kerr-Schild horizons and a broken file in one command")
   CHECK(second.at("run").at("ran") == 0);
   CHECK(second.at("run").at("skipped") == 11);
   CHECK(second.at("rows") == rows);
+
+  // A step added to the folder (a running simulation): only it is computed, the other records are kept.
+  REQUIRE(runConformesh("-q generate horizon-series -o " + (dir / "more").string() + " --steps 1 --a0 0.7 --a1 0.7")
+              .status == 0);
+  fs::copy_file(dir / "more" / "t000.00.json", shapes / "t095.00.json");  // its "time" key says 0: listed first
+  const auto grown = runConformesh("-q horizons " + shapes.string() + " -o " + out.string() + " --eps 0.35 --no-plot --json");
+  const json third = json::parse(grown.out);
+  CHECK(third.at("run").at("ran") == 1);
+  CHECK(third.at("run").at("skipped") == 11);
+  CHECK(third.at("rows").size() == 12);
 }
 
 TEST_CASE("horizons: --spatial-metric and --param for every step, the time from the file name") {

@@ -103,9 +103,9 @@ json stepMetric(const HorizonStep& s, const HorizonSeriesOptions& o) {
 SweepSpec horizonSeriesSpec(const std::vector<HorizonStep>& steps, const HorizonSeriesOptions& o) {
   json studies = json::array();
   for (size_t k = 0; k < steps.size(); ++k) {
-    char name[32];
-    std::snprintf(name, sizeof name, "step%04zu", k);
-    studies.push_back({{"name", name},
+    // Named by the file, not its position: a step added to the folder later leaves the other ids (and records) as
+    // they were, so a rerun over a growing series computes only the new steps.
+    studies.push_back({{"name", fs::path(steps[k].file).stem().string()},
                        {"input", fs::path(steps[k].file).filename().string()},  // relative to the folder
                        {"eps", o.epsilon},
                        {"options", {{"no-check", !o.check}}}});

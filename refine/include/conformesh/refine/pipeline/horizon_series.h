@@ -38,7 +38,8 @@ struct HorizonStep {
 // the folder does not exist or holds no .json file.
 std::vector<HorizonStep> listHorizonSteps(const std::string& folder);
 
-// The sweep specification of the series: one study per step, named "step<k>", with the steps' spatial metric and
+// The sweep specification of the series: one study per step, named by its file's stem (so that
+// a step added later leaves the other steps' ids unchanged), with the steps' spatial metric and
 // parameters (options above, merged with each file's metadata) and ε; SweepCase::horizonMetric set on every case.
 SweepSpec horizonSeriesSpec(const std::vector<HorizonStep>& steps, const HorizonSeriesOptions& options);
 
