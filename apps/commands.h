@@ -16,6 +16,7 @@ void registerRefineCommand(CLI::App& app);
 void registerLayoutCommand(CLI::App& app);
 void registerEmbedCommand(CLI::App& app);
 void registerSweepCommand(CLI::App& app);
+void registerHorizonsCommand(CLI::App& app);
 void registerFieldCommand(CLI::App& app);
 void registerRepairCommand(CLI::App& app);
 void registerViewCommand(CLI::App& app);

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   conformesh::apps::registerLayoutCommand(app);
   conformesh::apps::registerEmbedCommand(app);
   conformesh::apps::registerSweepCommand(app);
+  conformesh::apps::registerHorizonsCommand(app);
   conformesh::apps::registerFieldCommand(app);
   conformesh::apps::registerRepairCommand(app);
   conformesh::apps::registerViewCommand(app);

@@ -88,6 +88,9 @@ json computeMetricCase(const SweepCase& c, const SweepRunOptions& options,
   std::unique_ptr<intrinsic::SmoothMetric> metric;
   if (c.kind == SweepInputKind::Field)
     metric = std::make_unique<intrinsic::SampledMetric>(intrinsic::readSampledField(c.input));
+  else if (c.kind == SweepInputKind::Horizon && c.horizonMetric.is_object())
+    metric = intrinsic::makeHorizonMetric(c.input, c.horizonMetric["spatial_metric"].get<std::string>(),
+                                          c.horizonMetric["params"].get<std::map<std::string, double>>());
   else if (c.kind == SweepInputKind::Horizon)
     metric = intrinsic::makeHorizonMetricFromFile(c.input);
   else

@@ -17,6 +17,7 @@
 #include "conformesh/refine/pipeline/output_verification.h"
 #include "conformesh/refine/pipeline/refinement_output.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
+#include "conformesh/refine/pipeline/horizon_series.h"
 #include "conformesh/refine/pipeline/sweep_case.h"
 #include "conformesh/refine/pipeline/sweep_run.h"
 #include "conformesh/refine/pipeline/sweep_spec.h"

@@ -33,6 +33,9 @@ struct SweepCase {
   nlohmann::json options;
   nlohmann::json key;  // what the id hashes: input (family or file name + content hash), params, level, options
   double cost = 0;     // relative work estimate (largest first): target vertices, or area-free 1/ε²
+  // Horizons only: null = the shape file's own spatial metric (readHorizonMetadata); else {"spatial_metric": NAME,
+  // "params": {...}} given by the caller (`conformesh horizons`, horizon_series.h), which puts it in `key`.
+  nlohmann::json horizonMetric;
 
   // The case's inputs as recorded in its record: study, group, input, kind, params, eps / vertices, options.
   nlohmann::json inputsJson() const;
