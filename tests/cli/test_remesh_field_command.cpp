@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "conformesh/intrinsic/io/mesh_io.h"
@@ -72,8 +73,8 @@ namespace {
 double edgeLengthError(const MeshData& d) {  // max relative |x_i − x_j| vs the written metric length
   double worst = 0;
   for (size_t e = 0; e < d.edges.size(); ++e) {
-    const double l = (d.positions[d.edges[e][0]] - d.positions[d.edges[e][1]]).norm();
-    worst = std::max(worst, std::abs(l - d.edgeLengths[e]) / d.edgeLengths[e]);
+    const double l = (d.positions[d.edges[e].v0] - d.positions[d.edges[e].v1]).norm();
+    worst = std::max(worst, std::abs(l - d.edges[e].length) / d.edges[e].length);
   }
   return worst;
 }
