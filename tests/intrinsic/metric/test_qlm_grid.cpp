@@ -14,6 +14,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "conformesh/intrinsic/metric/qlm_grid.h"
+#include "conformesh/intrinsic/metric/sampled_field_io.h"
 #include "conformesh/intrinsic/metric/sampled_metric.h"
 #include "support/scratch_dir.h"
 
@@ -97,6 +98,13 @@ TEST_CASE("QLM grid: Kerr horizon reads back at the nodes, converts (θ,φ) to (
       REQUIRE(f.gvv[k] == Approx(qtt(t, p)).epsilon(1e-13));
       REQUIRE(f.guv[k] == 0);
     }
+}
+
+TEST_CASE("QLM grid: readSampledField (every --field) recognises the QuasiLocalMeasures layout", "[qlm]") {
+  const SampledField f = readSampledField(writeQlm("dispatch.h5", {12 + 4, 24 + 4}));
+  CHECK(f.nu == 24);
+  CHECK(f.nv == 12);
+  CHECK(f.gvv[0] == Approx(qtt(M_PI / 24, 0)).epsilon(1e-13));  // g_vv = q_θθ at the first interior node
 }
 
 TEST_CASE("QLM grid: between nodes at fourth order; area 8πMr₊ within the interpolation error", "[qlm]") {
