@@ -12,6 +12,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/spatial_metric_registry.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
+#include "conformesh/intrinsic/metric/strahlkorper_io.h"
 #include "metric/family_checks.h"
 
 namespace conformesh::intrinsic {
@@ -67,6 +68,8 @@ Legendre normalizedLegendre(int L, double theta, int mMax) {
   throw InputError(describeAt(source, what));
 }
 
+}  // namespace
+
 // The radius must be positive for the surface to be star-shaped (an immersion). Checked on a Gauss–Legendre ×
 // uniform grid of (2 lMax + 8) × (4 lMax + 16) nodes: a sampling check, not a proof (docs/horizons.md §2).
 void checkPositiveRadius(const Strahlkorper& s, const std::string& source) {
@@ -82,8 +85,6 @@ void checkPositiveRadius(const Strahlkorper& s, const std::string& source) {
                          " phi=" + fmt(phi));
     }
 }
-
-}  // namespace
 
 std::string toString(YlmConvention c) {
   return c == YlmConvention::Orthonormal ? "orthonormal" : "orthonormal-condon-shortley";
@@ -342,10 +343,11 @@ MetricJet HorizonSurfaceMetric::jet(double u, double v) const {
 std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetric(const std::string& shapePath, const std::string& spatialMetric,
                                                         const std::map<std::string, double>& params) {
   std::shared_ptr<const SpatialMetric> gamma = makeSpatialMetric(spatialMetric, params);
-  return std::make_unique<HorizonSurfaceMetric>(readStrahlkorperJson(shapePath), std::move(gamma));
+  return std::make_unique<HorizonSurfaceMetric>(readHorizonShape(shapePath).shape, std::move(gamma));
 }
 
 HorizonFileMetadata readHorizonMetadata(const std::string& shapePath) {
+  if (isHdf5ShapePath(shapePath)) return readHorizonShapeHdf5(shapePath).meta;
   std::ifstream in(shapePath);
   if (!in) throw InputError(shapePath + ": cannot open the horizon shape file");
   std::stringstream text;

@@ -127,6 +127,8 @@ json computeMetricCase(const SweepCase& c, const SweepRunOptions& options,
   if (c.kind == SweepInputKind::Horizon) {
     stage("horizon diagnostics");
     j["horizon"] = horizonJson(*metric, j["total_area"].get<double>());
+    stage("approximate Killing vector on the output mesh (axis, orbits)");
+    j["horizon"]["killing"] = killingJson(r.mesh, r.reference, metric->domain());  // as remesh --horizon --json
     const intrinsic::HorizonFileMetadata meta = intrinsic::readHorizonMetadata(c.input);
     j["time"] = meta.hasTime ? json(meta.time) : json(nullptr);
   }

@@ -68,6 +68,9 @@ class Strahlkorper {
 // (docs/horizons.md §2).
 Strahlkorper parseStrahlkorperJson(const std::string& text, const std::string& source);
 Strahlkorper readStrahlkorperJson(const std::string& path);
+// InputError naming `source` when the radius is not positive on the (2 lMax + 8) × (4 lMax + 16) Gauss–Legendre ×
+// uniform check grid (a sampling check, not a proof; docs/horizons.md §2).
+void checkPositiveRadius(const Strahlkorper& s, const std::string& source);
 // The JSON form (orthonormal convention, 17 significant digits).
 std::string strahlkorperToJson(const Strahlkorper& s);
 
@@ -101,7 +104,7 @@ class HorizonSurfaceMetric : public SmoothMetric {
   std::shared_ptr<const SpatialMetric> gamma_;
 };
 
-// What the CLI builds from `--horizon SHAPE.json --spatial-metric NAME --param k=v ...`: the shape read from the file,
+// What the CLI builds from `--horizon SHAPE` (any form of strahlkorper_io.h's readHorizonShape) --spatial-metric NAME --param k=v ...`: the shape read from the file,
 // the spatial metric by name (makeSpatialMetric). Throws InputError as those do.
 std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetric(const std::string& shapePath, const std::string& spatialMetric,
                                                         const std::map<std::string, double>& params);
