@@ -3,16 +3,13 @@
 #include "conformesh/intrinsic/metric/horizon_surface.h"
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/metric/spatial_metric_registry.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
-#include "conformesh/intrinsic/metric/strahlkorper_io.h"
 #include "metric/family_checks.h"
 
 namespace conformesh::intrinsic {
@@ -340,59 +337,6 @@ MetricJet HorizonSurfaceMetric::jet(double u, double v) const {
   return j;
 }
 
-std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetric(const std::string& shapePath, const std::string& spatialMetric,
-                                                        const std::map<std::string, double>& params) {
-  std::shared_ptr<const SpatialMetric> gamma = makeSpatialMetric(spatialMetric, params);
-  return std::make_unique<HorizonSurfaceMetric>(readHorizonShape(shapePath).shape, std::move(gamma));
-}
-
-HorizonFileMetadata readHorizonMetadata(const std::string& shapePath) {
-  if (isHdf5ShapePath(shapePath)) return readHorizonShapeHdf5(shapePath).meta;
-  std::ifstream in(shapePath);
-  if (!in) throw InputError(shapePath + ": cannot open the horizon shape file");
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    fail(shapePath, std::string("not valid JSON: ") + e.what());
-  }
-  HorizonFileMetadata m;
-  if (!j.is_object()) fail(shapePath, "expected a JSON object with keys center and coefficients");
-  if (j.contains("spatial_metric")) {
-    if (!j["spatial_metric"].is_string())
-      fail(shapePath, "'spatial_metric': expected a string, found " + j["spatial_metric"].dump());
-    m.spatialMetric = j["spatial_metric"].get<std::string>();
-    const std::string file = m.spatialMetric.substr(0, m.spatialMetric.find(":/"));
-    const std::filesystem::path folder = std::filesystem::path(shapePath).parent_path();
-    if (file.find('.') != std::string::npos && std::filesystem::path(file).is_relative() &&
-        std::filesystem::exists(folder / file))
-      m.spatialMetric = (folder / m.spatialMetric).string();
-  }
-  if (j.contains("params")) {
-    if (!j["params"].is_object()) fail(shapePath, "'params': expected an object of numbers, found " + j["params"].dump());
-    for (const auto& [k, v] : j["params"].items()) {
-      if (!v.is_number()) fail(shapePath, "'params." + k + "': expected a number, found " + v.dump());
-      m.params[k] = v.get<double>();
-    }
-  }
-  if (j.contains("time")) {
-    if (!j["time"].is_number()) fail(shapePath, "'time': expected a number, found " + j["time"].dump());
-    m.hasTime = true, m.time = j["time"].get<double>();
-  }
-  return m;
-}
-
-std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetricFromFile(const std::string& shapePath) {
-  const HorizonFileMetadata m = readHorizonMetadata(shapePath);
-  try {
-    return makeHorizonMetric(shapePath, m.spatialMetric, m.params);
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    if (what.find(shapePath) != std::string::npos) throw;
-    throw InputError(shapePath + ": " + what);
-  }
-}
+// makeHorizonMetric, readHorizonMetadata and makeHorizonMetricFromFile read every shape form: strahlkorper_io.cpp.
 
 }  // namespace conformesh::intrinsic

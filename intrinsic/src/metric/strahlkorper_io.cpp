@@ -17,6 +17,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "conformesh/intrinsic/metric/sampled_field_hdf5.h"
+#include "conformesh/intrinsic/metric/spatial_metric_registry.h"
 #include "metric/family_checks.h"
 #include "metric/hdf5_handles.h"
 
@@ -29,6 +30,10 @@ using metric_detail::fmt;
 
 int ylmIndex(int l, int m) {
   return l * l + l + m;
+}
+
+[[noreturn]] void failAt(const std::string& source, const std::string& what) {
+  throw InputError(describeAt(source, what));
 }
 
 // Caps before allocating: a horizon finder's grid is at most a few hundred nodes per direction.
@@ -571,6 +576,64 @@ void writeHorizonShapesHdf5(const std::string& path, const std::vector<HorizonSh
   if (std::rename(temp.c_str(), path.c_str()) != 0) {
     std::remove(temp.c_str());
     throw InputError(path + ": cannot replace with the written file: " + std::strerror(errno));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------------------
+// horizon_surface.h's file entry points, here so that they read every shape form
+
+std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetric(const std::string& shapePath, const std::string& spatialMetric,
+                                                        const std::map<std::string, double>& params) {
+  std::shared_ptr<const SpatialMetric> gamma = makeSpatialMetric(spatialMetric, params);
+  return std::make_unique<HorizonSurfaceMetric>(readHorizonShape(shapePath).shape, std::move(gamma));
+}
+
+HorizonFileMetadata readHorizonMetadata(const std::string& shapePath) {
+  if (isHdf5ShapePath(shapePath)) return readHorizonShapeHdf5(shapePath).meta;
+  std::ifstream in(shapePath);
+  if (!in) throw InputError(shapePath + ": cannot open the horizon shape file");
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    failAt(shapePath, std::string("not valid JSON: ") + e.what());
+  }
+  HorizonFileMetadata m;
+  if (!j.is_object()) failAt(shapePath, "expected a JSON object with keys center and coefficients");
+  if (j.contains("spatial_metric")) {
+    if (!j["spatial_metric"].is_string())
+      failAt(shapePath, "'spatial_metric': expected a string, found " + j["spatial_metric"].dump());
+    m.spatialMetric = j["spatial_metric"].get<std::string>();
+    const std::string file = m.spatialMetric.substr(0, m.spatialMetric.find(":/"));
+    const std::filesystem::path folder = std::filesystem::path(shapePath).parent_path();
+    if (file.find('.') != std::string::npos && std::filesystem::path(file).is_relative() &&
+        std::filesystem::exists(folder / file))
+      m.spatialMetric = (folder / m.spatialMetric).string();
+  }
+  if (j.contains("params")) {
+    if (!j["params"].is_object()) failAt(shapePath, "'params': expected an object of numbers, found " + j["params"].dump());
+    for (const auto& [k, v] : j["params"].items()) {
+      if (!v.is_number()) failAt(shapePath, "'params." + k + "': expected a number, found " + v.dump());
+      m.params[k] = v.get<double>();
+    }
+  }
+  if (j.contains("time")) {
+    if (!j["time"].is_number()) failAt(shapePath, "'time': expected a number, found " + j["time"].dump());
+    m.hasTime = true, m.time = j["time"].get<double>();
+  }
+  return m;
+}
+
+std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetricFromFile(const std::string& shapePath) {
+  const HorizonFileMetadata m = readHorizonMetadata(shapePath);
+  try {
+    return makeHorizonMetric(shapePath, m.spatialMetric, m.params);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (what.find(shapePath) != std::string::npos) throw;
+    throw InputError(shapePath + ": " + what);
   }
 }
 
