@@ -84,13 +84,24 @@ void checkPositiveRadius(const Strahlkorper& s, const std::string& source) {
 }
 
 std::string toString(YlmConvention c) {
-  return c == YlmConvention::Orthonormal ? "orthonormal" : "orthonormal-condon-shortley";
+  switch (c) {
+    case YlmConvention::Orthonormal: return "orthonormal";
+    case YlmConvention::OrthonormalCondonShortley: return "orthonormal-condon-shortley";
+    case YlmConvention::SpectreSpherepack: return "spectre-spherepack";
+  }
+  return "orthonormal";
 }
 YlmConvention parseYlmConvention(const std::string& name) {
-  if (name == "orthonormal") return YlmConvention::Orthonormal;
-  if (name == "orthonormal-condon-shortley") return YlmConvention::OrthonormalCondonShortley;
+  for (YlmConvention c :
+       {YlmConvention::Orthonormal, YlmConvention::OrthonormalCondonShortley, YlmConvention::SpectreSpherepack})
+    if (name == toString(c)) return c;
   throw InputError("unknown spherical-harmonic convention '" + name +
-                   "': expected orthonormal or orthonormal-condon-shortley");
+                   "': expected orthonormal, orthonormal-condon-shortley or spectre-spherepack");
+}
+double ylmConventionFactor(YlmConvention c, int m) {
+  if (c == YlmConvention::OrthonormalCondonShortley) return std::abs(m) % 2 ? -1.0 : 1.0;
+  if (c == YlmConvention::SpectreSpherepack) return m == 0 ? std::sqrt(M_PI / 2) : m > 0 ? std::sqrt(M_PI) : -std::sqrt(M_PI);
+  return 1.0;
 }
 
 std::vector<YlmJet> realYlmJets(int lMax, double theta, double phi) {
@@ -200,8 +211,7 @@ Strahlkorper parseStrahlkorperJson(const std::string& text, const std::string& s
       fail(source, "coefficients[" + std::to_string(i) + "]: expected [l, m, a_lm] (two integers and a number), found " +
                        t.dump());
     const int l = t[0].get<int>(), m = t[1].get<int>();
-    const double sign = convention == YlmConvention::OrthonormalCondonShortley && (std::abs(m) % 2) ? -1.0 : 1.0;
-    terms.push_back({l, m, sign * t[2].get<double>()});
+    terms.push_back({l, m, ylmConventionFactor(convention, m) * t[2].get<double>()});
   }
   try {
     Strahlkorper s(Eigen::Vector3d(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()), terms);

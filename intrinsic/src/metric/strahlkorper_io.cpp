@@ -267,8 +267,7 @@ std::vector<Strahlkorper::Term> readCoefficients(hid_t g, const std::string& whe
                        " m=" + fmt(m));
     if (!std::isfinite(c)) throw InputError(row + ": a_lm is " + fmt(c) + " (expected a finite number)");
     const int li = static_cast<int>(l), mi = static_cast<int>(m);
-    const double sign = convention == YlmConvention::OrthonormalCondonShortley && (std::abs(mi) % 2) ? -1.0 : 1.0;
-    terms.push_back({li, mi, sign * c});
+    terms.push_back({li, mi, ylmConventionFactor(convention, mi) * c});
   }
   return terms;
 }

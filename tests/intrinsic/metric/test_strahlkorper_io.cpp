@@ -262,3 +262,25 @@ TEST_CASE("strahlkorper io: malformed HDF5 shapes name the file, dataset and ele
   std::ofstream(scratch("fake.h5")) << "not hdf5";
   CHECK_THAT(errorOf(scratch("fake.h5").string()), Catch::Contains("not an HDF5 file"));
 }
+
+TEST_CASE("strahlkorper io: SpECTRE's Spherepack coefficients give SpECTRE's documented expansion") {
+  // f = ½ P̄_0^0 a(0,0) + ½ P̄_2^0 a(0,2) + P̄_1^1 a(1,1) cos φ − P̄_2^1 b(1,2) sin φ − P̄_3^2 b(2,3) sin 2φ with
+  // P̄_l^m = (−1)^m √((2l+1)(l−m)!/(2(l+m)!)) P_l^m and Jackson's P_l^m (Condon–Shortley phase), in closed form:
+  // P_0^0 = 1, P_2^0 = (3x² − 1)/2, P_1^1 = −s, P_2^1 = −3xs, P_3^2 = 15 x s² (x = cos θ, s = sin θ).
+  const double a00 = 8, a02 = 0.3, a11 = -0.2, b12 = 0.15, b23 = 0.05;
+  const auto pbar = [](int l, int m, double P) {
+    double ratio = 1;  // (l − m)!/(l + m)!
+    for (int k = l - m + 1; k <= l + m; ++k) ratio /= k;
+    return (m % 2 ? -1.0 : 1.0) * std::sqrt((2 * l + 1) * ratio / 2) * P;
+  };
+  const auto spectre = [&](double t, double p) {
+    const double x = std::cos(t), s = std::sin(t);
+    return 0.5 * pbar(0, 0, 1) * a00 + 0.5 * pbar(2, 0, (3 * x * x - 1) / 2) * a02 + pbar(1, 1, -s) * a11 * std::cos(p) -
+           pbar(2, 1, -3 * x * s) * b12 * std::sin(p) - pbar(3, 2, 15 * x * s * s) * b23 * std::sin(2 * p);
+  };
+  const std::string text = R"({"center": [0, 0, 0], "convention": "spectre-spherepack", "coefficients": [[0, 0, 8], )"
+                           R"([2, 0, 0.3], [1, 1, -0.2], [2, -1, 0.15], [3, -2, 0.05]]})";
+  const Strahlkorper s = parseStrahlkorperJson(text, "spectre.json");
+  for (double t : {0.3, 1.1, 2.5})
+    for (double p : {0.2, 2.0, 4.4}) CHECK(s.radius(t, p).r == Approx(spectre(t, p)).epsilon(1e-14));
+}
