@@ -43,6 +43,11 @@ std::unique_ptr<intrinsic::SmoothMetric> loadMetricOrHorizon(const std::string& 
       std::move(shape.shape), intrinsic::makeSpatialMetric(h.spatialMetric, parseParameters(params)));
 }
 
+nlohmann::json horizonShapeReportJson(const HorizonInput& h) {
+  if (!h.given()) return nullptr;
+  return refine::horizonShapeJson(intrinsic::readHorizonShape(h.shape));
+}
+
 nlohmann::json horizonReportJson(const intrinsic::SmoothMetric& metric, double meshArea) {
   progress("horizon diagnostics (area, circumferences, spin)");
   return refine::horizonJson(metric, meshArea);

@@ -233,6 +233,9 @@ TEST_CASE("horizons: one HDF5 file with a group per step and a broken group") {
     // The approximate Killing vector's spin on the ~640-vertex mesh of ε = 0.35: a discretization estimate
     // (docs/horizons.md §4d), measured within 1e-2 of a here; 3e-2 allows for other meshes of the same size.
     CHECK(row.at("spin_killing").get<double>() == Approx(a).margin(3e-2));
+    const json record = json::parse(std::ifstream(out / "cases" / row.at("id").get<std::string>() / "record.json"));
+    CHECK(record.at("horizon").at("shape").at("form") == "coefficients");
+    CHECK(record.at("horizon").at("killing").at("degenerate") == false);
   }
   CHECK(ok == 10);
   // A rerun over the same file keeps every step; a group's id hashes its shape, not the whole file.
@@ -256,6 +259,15 @@ TEST_CASE("horizons: generate horizon-series --hdf5 --sampled, and remesh --hori
   // l_max = 16 fit: Smarr's area to the fit's ~1e-12 (docs/horizons.md §3); 1e-9 as remesh --horizon.
   CHECK(h.at("area").get<double>() == Approx(8 * M_PI * rPlus(0.9)).epsilon(1e-9));
   CHECK(h.at("spin").get<double>() == Approx(0.9).margin(1e-6));
+  const json& shape = h.at("shape");  // how the shape was given, with the fit's residual at the nodes
+  CHECK(shape.at("form") == "sampled");
+  CHECK(shape.at("l_max") == 16);
+  CHECK(shape.at("theta_nodes") == "gauss-legendre");
+  CHECK(shape.at("grid") == json::array({34, 68}));
+  // The spheroid is not band-limited: the l_max = 16 projection misses it at the nodes by its l > 16 tail, measured
+  // 2.4e-10 at a = 0.9; 1e-8 leaves room, a wrong projection would be O(0.1).
+  CHECK(shape.at("max_residual").get<double>() < 1e-8);
+  CHECK(shape.at("rms_residual").get<double>() <= shape.at("max_residual").get<double>());
   const auto bad = runConformesh("-q generate horizon-series --sampled -o " + (dir / "x").string());
   CHECK(bad.status == 2);
 }

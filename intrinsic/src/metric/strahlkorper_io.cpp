@@ -123,7 +123,7 @@ RadiusFit fitSampledRadius(const SampledRadius& s, int lMax, const std::string& 
     a = Y.householderQr().solve(r);
   }
   RadiusFit fit;
-  fit.lMax = lMax;
+  fit.lMax = lMax, fit.nodes = s.nodes, fit.nTheta = nt, fit.nPhi = np;
   const Eigen::VectorXd residual = Y * a - r;
   fit.maxResidual = residual.cwiseAbs().maxCoeff();
   fit.rmsResidual = std::sqrt(residual.squaredNorm() / residual.size());

@@ -35,7 +35,7 @@ std::function<double(double, double)> kerrSpheroid(double M, double a) {  // r =
 }
 
 fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("conformesh_test_strahlkorper_io_" + std::to_string(::getpid()));
+  const fs::path d = fs::temp_directory_path() / "conformesh_test_strahlkorper_io";
   fs::create_directories(d);
   return d / name;
 }

@@ -37,6 +37,8 @@ struct RadiusFit {
   Strahlkorper shape{Eigen::Vector3d::Zero(), {{0, 0, 1.0}}};
   int lMax = 0;
   double maxResidual = 0, rmsResidual = 0;  // max and RMS of |r_fit(θ_i, φ_k) − r(i, k)| over the nodes
+  ThetaNodes nodes = ThetaNodes::GaussLegendre;
+  int nTheta = 0, nPhi = 0;  // the grid fitted
 };
 
 // The default l_max of a grid: min(nθ − 1, (nφ − 1)/2), the largest for which the Gauss–Legendre projection is exact
