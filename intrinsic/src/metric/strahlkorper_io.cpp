@@ -245,8 +245,8 @@ Eigen::Vector3d readCenter(hid_t g, const std::string& where) {
   } else {
     throw InputError(where + ": missing 'center' (an attribute or dataset of 3 numbers x, y, z)");
   }
-  if (c.size() != 3) throw InputError(where + ": 'center': expected 3 numbers (x, y, z), found " +
-                                      std::to_string(c.size()));
+  if (c.size() != 3)
+    throw InputError(where + ": 'center': expected 3 numbers (x, y, z), found " + std::to_string(c.size()));
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(c[i])) throw InputError(where + ": 'center'[" + std::to_string(i) + "] is " + fmt(c[i]));
   return Eigen::Vector3d(c[0], c[1], c[2]);
@@ -307,7 +307,8 @@ HorizonFileMetadata readMetadata(hid_t g, const std::string& where, const std::s
       m.spatialMetric = (folder / *s).string();
   }
   for (const std::string& name : attributeNames(g))
-    if (name.rfind("param_", 0) == 0 && name.size() > 6) m.params[name.substr(6)] = *scalarAttribute(g, name.c_str(), where);
+    if (name.rfind("param_", 0) == 0 && name.size() > 6)
+      m.params[name.substr(6)] = *scalarAttribute(g, name.c_str(), where);
   return m;
 }
 
@@ -417,8 +418,8 @@ HorizonShapeRecord readHorizonShapeJson(const std::string& path) {
                        " numbers (as radius[0]), found " + r[i].dump().substr(0, 60));
     for (size_t k = 0; k < r[i].size(); ++k) {
       if (!r[i][k].is_number())
-        throw InputError(path + ": radius[" + std::to_string(i) + "][" + std::to_string(k) + "]: expected a number, found " +
-                         r[i][k].dump());
+        throw InputError(path + ": radius[" + std::to_string(i) + "][" + std::to_string(k) +
+                         "]: expected a number, found " + r[i][k].dump());
       s.r(i, k) = r[i][k].get<double>();
     }
   }
@@ -612,7 +613,8 @@ HorizonFileMetadata readHorizonMetadata(const std::string& shapePath) {
       m.spatialMetric = (folder / m.spatialMetric).string();
   }
   if (j.contains("params")) {
-    if (!j["params"].is_object()) failAt(shapePath, "'params': expected an object of numbers, found " + j["params"].dump());
+    if (!j["params"].is_object())
+      failAt(shapePath, "'params': expected an object of numbers, found " + j["params"].dump());
     for (const auto& [k, v] : j["params"].items()) {
       if (!v.is_number()) failAt(shapePath, "'params." + k + "': expected a number, found " + v.dump());
       m.params[k] = v.get<double>();

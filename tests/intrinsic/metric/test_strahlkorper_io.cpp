@@ -44,7 +44,10 @@ double relativeAreaError(const Strahlkorper& s, double a) {
   QuadratureOptions q;
   q.relativeTolerance = 1e-13, q.absoluteTolerance = 1e-13;
   const double exact = 8 * M_PI * (1 + std::sqrt(1 - a * a));
-  return std::abs(metricArea(HorizonSurfaceMetric(s, std::make_shared<KerrSchildMetric>(1.0, a, Eigen::Vector3d::Zero())), q).value - exact) /
+  return std::abs(
+             metricArea(HorizonSurfaceMetric(s, std::make_shared<KerrSchildMetric>(1.0, a, Eigen::Vector3d::Zero())), q)
+                 .value -
+             exact) /
          exact;
 }
 
@@ -128,8 +131,7 @@ TEST_CASE("strahlkorper io: HDF5 groups round-trip coefficients and metadata bit
   QuadratureOptions q;
   q.relativeTolerance = 1e-13, q.absoluteTolerance = 1e-13;
   auto gamma = std::make_shared<KerrSchildMetric>(1.0, 0.8, Eigen::Vector3d(0.7, -1.3, 2.1));
-  CHECK(metricArea(HorizonSurfaceMetric(r.shape, gamma), q).value ==
-        Approx(8 * M_PI * 1.6).epsilon(1e-12));
+  CHECK(metricArea(HorizonSurfaceMetric(r.shape, gamma), q).value == Approx(8 * M_PI * 1.6).epsilon(1e-12));
 }
 
 TEST_CASE("strahlkorper io: an h5py-style file (center dataset, variable-length strings) reads") {
@@ -217,8 +219,8 @@ TEST_CASE("strahlkorper io: sampled radius in JSON") {
   CHECK(std::abs(r.shape.coefficient(2, 0) - 0.1) < 1e-14);
   CHECK(r.meta.time == 2);
   std::ofstream(p) << "{\"center\": [0, 0, 0], \"radius\": [[1, 1, 1], [1, -2, 1]]}";
-  CHECK_THAT(errorOf(p.string()), Catch::Contains(p.string()) && Catch::Contains("radius[1][1]") &&
-                                      Catch::Contains("positive"));
+  CHECK_THAT(errorOf(p.string()),
+             Catch::Contains(p.string()) && Catch::Contains("radius[1][1]") && Catch::Contains("positive"));
 }
 
 TEST_CASE("strahlkorper io: malformed HDF5 shapes name the file, dataset and element") {
@@ -249,7 +251,8 @@ TEST_CASE("strahlkorper io: malformed HDF5 shapes name the file, dataset and ele
     H5Gclose(g);
   }
   const std::string f = p.string();
-  CHECK_THAT(errorOf(f + ":/nocoef"), Catch::Contains(f + ":/nocoef") && Catch::Contains("missing dataset 'coefficients'"));
+  CHECK_THAT(errorOf(f + ":/nocoef"),
+             Catch::Contains(f + ":/nocoef") && Catch::Contains("missing dataset 'coefficients'"));
   CHECK_THAT(errorOf(f + ":/shape"), Catch::Contains(f + ":/shape") && Catch::Contains("'coefficients'") &&
                                          Catch::Contains("(n, 3)") && Catch::Contains("found (1, 5)"));
   CHECK_THAT(errorOf(f + ":/nan"), Catch::Contains("'coefficients' row 1") && Catch::Contains("nan"));
@@ -275,8 +278,9 @@ TEST_CASE("strahlkorper io: SpECTRE's Spherepack coefficients give SpECTRE's doc
   };
   const auto spectre = [&](double t, double p) {
     const double x = std::cos(t), s = std::sin(t);
-    return 0.5 * pbar(0, 0, 1) * a00 + 0.5 * pbar(2, 0, (3 * x * x - 1) / 2) * a02 + pbar(1, 1, -s) * a11 * std::cos(p) -
-           pbar(2, 1, -3 * x * s) * b12 * std::sin(p) - pbar(3, 2, 15 * x * s * s) * b23 * std::sin(2 * p);
+    return 0.5 * pbar(0, 0, 1) * a00 + 0.5 * pbar(2, 0, (3 * x * x - 1) / 2) * a02 +
+           pbar(1, 1, -s) * a11 * std::cos(p) - pbar(2, 1, -3 * x * s) * b12 * std::sin(p) -
+           pbar(3, 2, 15 * x * s * s) * b23 * std::sin(2 * p);
   };
   const std::string text = R"({"center": [0, 0, 0], "convention": "spectre-spherepack", "coefficients": [[0, 0, 8], )"
                            R"([2, 0, 0.3], [1, 1, -0.2], [2, -1, 0.15], [3, -2, 0.05]]})";

@@ -20,7 +20,7 @@ namespace conformesh::intrinsic {
 //                  collocation grid of spectral horizon finders);
 //   Uniform:       θ_i = π (i + ½) / nθ (cell centres, no node on a pole).
 enum class ThetaNodes { GaussLegendre, Uniform };
-std::string toString(ThetaNodes n);               // "gauss-legendre", "uniform"
+std::string toString(ThetaNodes n);                // "gauss-legendre", "uniform"
 ThetaNodes parseThetaNodes(const std::string& s);  // InputError naming the value otherwise
 std::vector<double> thetaNodes(ThetaNodes kind, int n);
 
