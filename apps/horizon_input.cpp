@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "cli_common.h"
 #include "conformesh/intrinsic/errors.h"
@@ -53,6 +54,22 @@ nlohmann::json horizonReportJson(const intrinsic::SmoothMetric& metric, double m
   return refine::horizonJson(metric, meshArea);
 }
 
+namespace {
+// One report line for the approximate Killing vector: null figures (degenerate, no axis) print as "none".
+std::string figure(const nlohmann::json& value, const char* format) {
+  if (!value.is_number()) return "none";
+  char text[64];
+  std::snprintf(text, sizeof text, format, value.get<double>());
+  return text;
+}
+
+void printKillingLine(const nlohmann::json& k) {
+  std::printf("  %-34s lambda*A/4pi %.3g%s, C_eq %s, spin %s\n", "approximate Killing vector",
+              k["scaled_eigenvalues"][0].get<double>(), k["degenerate"].get<bool>() ? " (degenerate: no single axis)" : "",
+              figure(k["equatorial_circumference_killing"], "%.9g").c_str(), figure(k["spin_from_killing"], "%.6f").c_str());
+}
+}  // namespace
+
 void printHorizonReport(const nlohmann::json& h) {
   std::printf("  %-34s %.12g (mesh %.12g)\n", "horizon area", h["area"].get<double>(), h["mesh_area"].get<double>());
   std::printf("  %-34s %.12g\n", "irreducible mass sqrt(A/16pi)", h["irreducible_mass"].get<double>());
@@ -64,11 +81,7 @@ void printHorizonReport(const nlohmann::json& h) {
   else
     std::printf("  %-34s %.9f\n", "spin from C_polar/C_eq", h["spin"].get<double>());
   if (h.contains("killing") && h["killing"].contains("degenerate"))  // killingJson (remesh_json.h)
-    std::printf("  %-34s lambda*A/4pi %.3g%s, C_eq %s, spin %s\n", "approximate Killing vector",
-                h["killing"]["scaled_eigenvalues"][0].get<double>(),
-                h["killing"]["degenerate"].get<bool>() ? " (degenerate: no single axis)" : "",
-                h["killing"]["equatorial_circumference_killing"].dump().c_str(),
-                h["killing"]["spin_from_killing"].dump().c_str());
+    printKillingLine(h["killing"]);
 }
 
 }  // namespace conformesh::apps

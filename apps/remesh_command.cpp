@@ -8,6 +8,7 @@
 #include "cli_common.h"
 #include "commands.h"
 #include "usage_errors.h"
+#include "conformesh/embedding/fit/isometric_embedding.h"
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/io/vtk_writer.h"
@@ -44,6 +45,7 @@ struct RemeshArgs {
   bool keepFailed = false;
   double epsilonRelative = 0;
   std::int64_t maxVertices = refine::MeshRemeshOptions{}.maxVertices;
+  bool embed = false;      // --embed: fit positions where the metric has no known embedding
   bool epsGiven = false;  // --eps or --eps-rel on the command line
 };
 
@@ -78,8 +80,54 @@ void printWithinBandNote(const nlohmann::json& c, double epsilon) {
               "", c["radius"].get<double>() / epsilon, c["within_band"].get<double>());
 }
 
+// --embed: fits R^3 positions to the output's edge lengths (embedding/fit/isometric_embedding.h) where the metric has
+// no known embedding. Criterion: max relative edge residual <= EmbeddingOptions::tolerance (1e-8; docs/cli.md#remesh).
+// Isometric: the positions go into `data` and `r` (PLY, VTK). Otherwise the outputs keep the canonical-domain points.
+// A fit that is not isometric, or that throws, is reported ("embedding") and is not an error of remesh.
+void fitOutputEmbedding(refine::RemeshResult& r, intrinsic::MeshData& data, nlohmann::json& report) {
+  if (!r.positions.empty()) {
+    report["embedding"] = refine::remeshKnownEmbeddingJson();
+    return;
+  }
+  embedding::EmbeddingOptions eo;
+  eo.progress = [](const std::string& line) { progress(line); };
+  progress("embed: fitting " + std::to_string(r.mesh.mesh.nVertices()) + " vertices to the output's edge lengths");
+  try {
+    const embedding::EmbeddingResult fit = embedding::fitIsometricEmbedding(r.mesh, eo);
+    report["embedding"] = refine::remeshEmbeddingJson(fit, r.mesh);
+    if (!fit.isometric) return;
+    r.positions = fit.positions;
+    data.positions = fit.positions;
+    data.comments.push_back("positions: fitted isometric embedding (conformesh remesh --embed: " + fit.verdict + ")");
+  } catch (const std::exception& e) {
+    progress(std::string("embed: the fit failed: ") + e.what());
+    report["embedding"] = refine::remeshEmbeddingErrorJson(e.what());
+  }
+}
+
+// One line of the text report on --embed.
+void printEmbedding(const nlohmann::json& e) {
+  std::string line;
+  if (e.value("known_embedding", false))
+    line = "known embedding (no fit needed)";
+  else if (e.contains("error"))
+    line = "fit failed: " + e["error"].get<std::string>() + "; drawn in the canonical domain";
+  else {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%s (max rel. length error %.3e, tolerance %.1e)",
+                  e["isometric"].get<bool>() ? "isometric" : "NOT isometric",
+                  e["max_relative_residual"].get<double>(), e["tolerance"].get<double>());
+    line = buf;
+    line += e["isometric"].get<bool>() ? "; fitted positions written"
+                                       : "; outputs keep the canonical-domain (sphere) points";
+  }
+  std::printf("  %-34s %s\n", "embedded", line.c_str());
+}
+
 void run(const RemeshArgs& a) {
   if (!a.epsGiven) throw UsageError("--eps E or --eps-rel F is required");
+  if (a.embed && isMeshFilePath(a.family))
+    throw InputError("remesh: --embed applies to smooth metrics; for a mesh file run `conformesh embed` on the output");
   if (isMeshFilePath(
           a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh_input.h)
     return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
@@ -101,7 +149,7 @@ void run(const RemeshArgs& a) {
   o.refinement.smoothingRule = refine::parseSmoothingRule(a.smoothingRule);
   o.refinement.segmentRule = refine::parseSegmentRule(a.segmentRule);
   o.progress = [](const std::string& s) { progress(s); };
-  const refine::RemeshResult r = refine::remeshMetric(*metric, o);
+  refine::RemeshResult r = refine::remeshMetric(*metric, o);
   intrinsic::MeshData data = refine::toMeshData(r, *metric, r.epsilon);
   printNotices(r.notices);
 
@@ -122,6 +170,7 @@ void run(const RemeshArgs& a) {
     j["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
     addCurvatureMeasureProperties(data, c);
   }
+  if (a.embed) fitOutputEmbedding(r, data, j);
   writeVerifiedMeshOutputs(refine::verifyMetricRemesh(r), a.keepFailed, data, a.output, a.ascii, a.vtk,
                            [&] { return refine::toVtkMesh(data, r); }, a.json, j);
   if (a.json) {
@@ -150,6 +199,7 @@ void run(const RemeshArgs& a) {
     printWithinBandNote(c, r.epsilon);
   }
   if (j.contains("horizon")) printHorizonReport(j["horizon"]);
+  if (j.contains("embedding")) printEmbedding(j["embedding"]);
   std::printf("  %-34s discretize %.2f, uniformize %.2f, refine %.2f, pull back %.2f\n", "seconds",
               r.seconds.discretize, r.seconds.uniformize, r.seconds.refine, r.seconds.pullBack);
   std::printf("  written to %s%s%s\n", a.output.c_str(), a.vtk.empty() ? "" : " and ", a.vtk.c_str());
@@ -201,6 +251,8 @@ void registerRemeshCommand(CLI::App& app) {
   sub->add_option("--refine-in", a->refineIn, "Mesh files: refine in the uniformized or the input metric")
       ->check(oneOf({"uniformized", "input"}))
       ->capture_default_str();
+  sub->add_flag("--embed", a->embed,
+                "Smooth metrics without a known embedding: fit R^3 positions, written when isometric (off)");
   sub->add_flag("--ascii", a->ascii, "Write ASCII PLY instead of binary");
   addKeepFailedOption(sub, a->keepFailed);
   sub->callback([a, eps, epsRel] {

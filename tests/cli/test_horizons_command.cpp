@@ -7,6 +7,7 @@
 
 #include "support/cli_runner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -270,4 +271,26 @@ TEST_CASE("horizons: generate horizon-series --hdf5 --sampled, and remesh --hori
   CHECK(shape.at("rms_residual").get<double>() <= shape.at("max_residual").get<double>());
   const auto bad = runConformesh("-q generate horizon-series --sampled -o " + (dir / "x").string());
   CHECK(bad.status == 2);
+}
+
+// --lmax sets the degree of the generator's Strahlkorper fit: the Kerr-Schild spheroid is even in cos(theta) and
+// axisymmetric, so its coefficients are a_l0 with l even, and the fit at l_max = L carries degrees up to exactly L.
+TEST_CASE("generate horizon-series --lmax: the fit's highest degree") {
+  const fs::path dir = conformesh::testing::scratchDir() / "horizons_lmax";
+  fs::remove_all(dir);
+  for (int lMax : {4, 10}) {
+    const fs::path out = dir / std::to_string(lMax);
+    REQUIRE(runConformesh("-q generate horizon-series -o " + out.string() + " --steps 1 --a0 0.8 --a1 0.8 --lmax " +
+                          std::to_string(lMax))
+                .status == 0);
+    std::ifstream in(out / "t000.00.json");
+    const json shape = json::parse(in);
+    int highest = -1;
+    for (const auto& c : shape.at("coefficients")) {
+      const int l = c.at(0).get<int>(), m = c.at(1).get<int>();
+      CHECK(l <= lMax);
+      if (c.at(2).get<double>() != 0.0 && m == 0) highest = std::max(highest, l);
+    }
+    CHECK(highest == lMax);
+  }
 }

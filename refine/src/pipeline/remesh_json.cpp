@@ -185,6 +185,22 @@ nlohmann::json embeddingJson(const embedding::EmbeddingResult& fit, const intrin
           {"verdict", fit.verdict}};
 }
 
+nlohmann::json remeshEmbeddingJson(const embedding::EmbeddingResult& fit, const intrinsic::IntrinsicTriangulation& mesh) {
+  nlohmann::json j = embeddingJson(fit, mesh);
+  j["known_embedding"] = false;
+  j["positions_written"] = fit.isometric;
+  j["drawn_in"] = fit.isometric ? "fitted embedding" : "canonical domain";
+  return j;
+}
+
+nlohmann::json remeshKnownEmbeddingJson() {
+  return {{"known_embedding", true}, {"positions_written", false}, {"drawn_in", "known embedding"}};
+}
+
+nlohmann::json remeshEmbeddingErrorJson(const std::string& error) {
+  return {{"known_embedding", false}, {"positions_written", false}, {"drawn_in", "canonical domain"}, {"error", error}};
+}
+
 nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c) {
   const auto finiteOrNull = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
   return {{"mesh_area", c.meshArea},

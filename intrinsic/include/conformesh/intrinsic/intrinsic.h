@@ -45,6 +45,7 @@
 #include "conformesh/intrinsic/metric/sampled_field.h"
 #include "conformesh/intrinsic/metric/sampled_field_checks.h"
 #include "conformesh/intrinsic/metric/sampled_field_hdf5.h"
+#include "conformesh/intrinsic/metric/qlm_grid.h"
 #include "conformesh/intrinsic/metric/sampled_spatial_metric.h"
 #include "conformesh/intrinsic/metric/sampled_field_io.h"
 #include "conformesh/intrinsic/metric/sampled_metric.h"

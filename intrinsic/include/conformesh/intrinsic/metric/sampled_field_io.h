@@ -9,7 +9,9 @@
 
 namespace conformesh::intrinsic {
 
-// Reads a field file: HDF5 when the file starts with HDF5's signature (whatever its extension), else the text format.
+// Reads a field file: HDF5 when the file starts with HDF5's signature (whatever its extension) — Einstein Toolkit
+// QuasiLocalMeasures output (qlm_grid.h, surface 0, last iteration) when it holds QUASILOCALMEASURES::qlm_qtt[...] —,
+// else the text format.
 // `path:/group` names a field in a group of an HDF5 file. Throws InputError naming the file (and line, dataset or
 // attribute) for a file that cannot be opened or read; the samples are checked by SampledMetric's constructor.
 SampledField readSampledField(const std::string& path);

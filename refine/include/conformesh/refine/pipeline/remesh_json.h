@@ -46,6 +46,13 @@ nlohmann::json refineJson(const RefineResult& r, const intrinsic::IntrinsicTrian
 // The dict of `embed --json` without the file names: vertices, edges, start, tolerance, isometric, residuals, worst
 // edge, iterations, seconds, verdict.
 nlohmann::json embeddingJson(const embedding::EmbeddingResult& fit, const intrinsic::IntrinsicTriangulation& input);
+// The "embedding" dict of `remesh --embed --json`: embeddingJson's keys plus positions_written (the fit was isometric and
+// its positions are in the outputs) and drawn_in ("fitted embedding" or "canonical domain").
+nlohmann::json remeshEmbeddingJson(const embedding::EmbeddingResult& fit, const intrinsic::IntrinsicTriangulation& mesh);
+// The same dict when the metric has a known embedding (no fit: known_embedding true, positions_written false, drawn_in
+// "known embedding") or when the fit threw (`error` is its message, positions_written false, drawn_in "canonical domain").
+nlohmann::json remeshKnownEmbeddingJson();
+nlohmann::json remeshEmbeddingErrorJson(const std::string& error);
 
 // The dict of `info --json` without what depends on how the file was read (file, reoriented_faces,
 // unreferenced_vertices_removed, lengths_from): topology, curvature totals, angle and length ranges, Delaunay-ness.
