@@ -9,13 +9,16 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/measure/horizon_diagnostics.h"
 #include "conformesh/intrinsic/metric/horizon_surface.h"
+#include "conformesh/intrinsic/metric/spatial_metric_registry.h"
+#include "conformesh/intrinsic/metric/strahlkorper_io.h"
 #include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::apps {
 
 void addHorizonOptions(CLI::App* sub, HorizonInput& h) {
   sub->add_option("--horizon", h.shape,
-                  "Strahlkorper shape JSON (center, coefficients) instead of a family. Details: docs/cli.md#horizons");
+                  "Strahlkorper shape instead of a family: JSON or FILE.h5[:/group], coefficients or a sampled "
+                  "theta-phi radius. Details: docs/cli.md#horizons");
   sub->add_option("--spatial-metric", h.spatialMetric,
                   "3-metric of --horizon: kerr-schild, schwarzschild-isotropic, flat (--param M=, a=, cx=, ...) or a sampled "
                   "grid FILE.h5[:/group]. "
@@ -30,7 +33,20 @@ std::unique_ptr<intrinsic::SmoothMetric> loadMetricOrHorizon(const std::string& 
   if (!family.empty() || !field.empty())
     throw InputError(command + ": --horizon replaces the FAMILY and --field; give only one of them");
   progress("reading horizon shape " + h.shape + " in " + h.spatialMetric);
-  return intrinsic::makeHorizonMetric(h.shape, h.spatialMetric, parseParameters(params));
+  intrinsic::HorizonShapeRecord shape = intrinsic::readHorizonShape(h.shape);
+  if (shape.sampled) {
+    char line[200];
+    std::snprintf(line, sizeof line, "sampled radius fitted at l_max = %d: residual at the nodes max %.3g, rms %.3g",
+                  shape.fit.lMax, shape.fit.maxResidual, shape.fit.rmsResidual);
+    progress(line);
+  }
+  return std::make_unique<intrinsic::HorizonSurfaceMetric>(
+      std::move(shape.shape), intrinsic::makeSpatialMetric(h.spatialMetric, parseParameters(params)));
+}
+
+nlohmann::json horizonShapeReportJson(const HorizonInput& h) {
+  if (!h.given()) return nullptr;
+  return refine::horizonShapeJson(intrinsic::readHorizonShape(h.shape));
 }
 
 nlohmann::json horizonReportJson(const intrinsic::SmoothMetric& metric, double meshArea) {

@@ -29,6 +29,9 @@ std::unique_ptr<intrinsic::SmoothMetric> loadMetricOrHorizon(const std::string& 
                                                              const std::vector<std::string>& params,
                                                              const std::string& field, const HorizonInput& h);
 
+// How --horizon's shape was given (refine::horizonShapeJson: form, l_max, the sampled fit's residual); null without.
+nlohmann::json horizonShapeReportJson(const HorizonInput& h);
+
 // The report's "horizon" object: area (smooth metric), mesh_area, irreducible_mass, equatorial_circumference,
 // polar_circumference, spin (null when the circumference ratio is outside Kerr's range), and the Kerr values for the
 // spatial metric's parameters when it is kerr-schild.

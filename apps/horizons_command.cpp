@@ -122,7 +122,8 @@ int run(const HorizonsArgs& a) {
 }
 
 struct GenerateArgs {
-  std::string dir;
+  std::string dir, hdf5;
+  bool sampled = false;
   int steps = 10, lMax = 16;
   double a0 = 0.5, a1 = 0.9, mass = 1, dt = 10;
 };
@@ -135,7 +136,10 @@ void registerGenerateSeries(CLI::App& app) {
   sub->footer("Writes DIR/t<time>.json: the horizon r = r+ of Kerr-Schild coordinates, the spheroid with semi-axes\n"
               "sqrt(r+^2 + a^2), r+, fitted at --lmax, a rising linearly from --a0 to --a1, time k*--dt, with keys\n"
               "spatial_metric, params and time. Details: docs/cli.md#horizons");
-  sub->add_option("-o,--output", g->dir, "Output folder DIR, created if missing (required)")->required();
+  sub->add_option("-o,--output", g->dir, "Output folder DIR, created if missing (required unless --hdf5)");
+  sub->add_option("--hdf5", g->hdf5, "Write one HDF5 file FILE.h5 instead, one group /t<time> per step");
+  sub->add_flag("--sampled", g->sampled,
+                "With --hdf5: the radius on a 2(lmax+1) x 4(lmax+1) Gauss-Legendre x uniform grid, not coefficients");
   sub->add_option("--steps", g->steps, "Number of shape files (default 10)");
   sub->add_option("--a0", g->a0, "Spin a of the first step (default 0.5)");
   sub->add_option("--a1", g->a1, "Spin a of the last step (default 0.9)");
@@ -145,6 +149,16 @@ void registerGenerateSeries(CLI::App& app) {
   sub->callback([g] {
     std::vector<std::string> files;
     try {
+      if (g->dir.empty() == g->hdf5.empty())
+        throw InputError("generate horizon-series: give one of -o DIR (JSON files) and --hdf5 FILE.h5");
+      if (g->sampled && g->hdf5.empty()) throw InputError("generate horizon-series: --sampled needs --hdf5");
+      if (!g->hdf5.empty()) {
+        files = refine::writeKerrHorizonSeriesHdf5(g->hdf5, g->steps, g->a0, g->a1, g->mass, g->dt, g->lMax,
+                                                   g->sampled);
+        std::printf("wrote %zu horizon shape groups (%s) in %s (a = %g ... %g, M = %g, l_max = %d)\n", files.size(),
+                    g->sampled ? "sampled radius" : "coefficients", g->hdf5.c_str(), g->a0, g->a1, g->mass, g->lMax);
+        return;
+      }
       files = refine::writeKerrHorizonSeries(g->dir, g->steps, g->a0, g->a1, g->mass, g->dt, g->lMax);
     } catch (const InputError& e) {
       std::fprintf(stderr, "conformesh: error: %s\n", e.what());
@@ -161,12 +175,13 @@ void registerHorizonsCommand(CLI::App& app) {
   auto a = std::make_shared<HorizonsArgs>();
   CLI::App* sub = app.add_subcommand("horizons", "Remesh a time series of horizon shape files into one table and plot");
   sub->footer(
-      "SERIES: a folder of Strahlkorper shape files (*.json, docs/horizons.md §2). A step's time is its \"time\" key,\n"
-      "else the last number in its file name. Each step runs in its own process with its record in DIR/cases/<id>/;\n"
+      "SERIES: a folder of Strahlkorper shape files (*.json, docs/horizons.md §2), or one HDF5 file with a shape\n"
+      "group per step. A step's time is its \"time\" key (attribute), else the last number in its file (group) name.\n"
+      "Each step runs in its own process with its record in DIR/cases/<id>/;\n"
       "a rerun with the same SERIES and DIR keeps the finished steps. DIR/series.csv, series.json, series.png.\n"
       "Exit status: 0 every step ok, 1 a step failed (its row has the error; the others complete), 2 a bad option.\n"
       "Details: docs/cli.md#horizons");
-  sub->add_option("series", a->series, "Folder of horizon shape files (*.json)")->required();
+  sub->add_option("series", a->series, "Folder of horizon shape files (*.json), or FILE.h5 of shape groups")->required();
   sub->add_option("-o,--output", a->dir, "Output folder DIR, created if missing; reused to resume (required)")
       ->required();
   sub->add_option("--spatial-metric", a->spatialMetric,

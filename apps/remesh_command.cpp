@@ -156,6 +156,7 @@ void run(const RemeshArgs& a) {
   nlohmann::json j = refine::metricRemeshJson(r, *metric, o);
   if (a.horizon.given()) {
     j["horizon"] = horizonReportJson(*metric, intrinsic::totalArea(r.mesh));
+    j["horizon"]["shape"] = horizonShapeReportJson(a.horizon);
     progress("approximate Killing vector on the output mesh (axis, orbits)");
     j["horizon"]["killing"] = refine::killingJson(r.mesh, r.reference, metric->domain());
   }

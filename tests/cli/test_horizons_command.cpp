@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,6 +17,8 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "conformesh/intrinsic/metric/strahlkorper_io.h"
 
 namespace fs = std::filesystem;
 using conformesh::testing::runConformesh;
@@ -175,6 +178,99 @@ TEST_CASE("horizons: a SERIES that is not a folder of shapes exits 2 and names i
   r = runConformesh("-q generate horizon-series -o " + (dir / "g").string() + " --a1 1.2");
   CHECK(r.status == 2);
   CHECK(r.err.find("|a| < M") != std::string::npos);
+}
+
+TEST_CASE("horizons: one HDF5 file with a group per step and a broken group") {
+  using namespace conformesh::intrinsic;
+  const fs::path dir = conformesh::testing::scratchDir() / "horizons_hdf5", file = dir / "series.h5", out = dir / "out";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // Ten Kerr–Schild horizons as coefficient groups (written from C++), and at t = 45 a sampled radius with r ≤ 0.
+  std::vector<HorizonShapeGroup> groups;
+  for (int k = 0; k < 10; ++k) {
+    const double a = 0.5 + 0.4 * k / 9, rp = rPlus(a), R2 = rp * rp + a * a;
+    HorizonShapeGroup g;
+    char name[32];
+    std::snprintf(name, sizeof name, "/t%03d", 10 * k);
+    g.group = name;
+    g.record.shape = fitStrahlkorper([&](double t, double) {
+      return 1 / std::sqrt(std::sin(t) * std::sin(t) / R2 + std::cos(t) * std::cos(t) / (rp * rp));
+    }, 16, Eigen::Vector3d::Zero());
+    g.record.meta.params = {{"M", 1.0}, {"a", a}};
+    g.record.meta.hasTime = true, g.record.meta.time = 10 * k;
+    groups.push_back(g);
+  }
+  HorizonShapeGroup broken;
+  broken.group = "/t045";
+  broken.record.sampled = true;
+  broken.record.meta.hasTime = true, broken.record.meta.time = 45;
+  broken.samples.r = Eigen::MatrixXd::Constant(5, 10, 2.0);
+  broken.samples.r(3, 7) = -1;
+  groups.push_back(broken);
+  writeHorizonShapesHdf5(file.string(), groups);
+
+  const auto r = runConformesh("-q horizons " + file.string() + " -o " + out.string() + " --eps 0.35 --no-plot --json");
+  INFO(r.err);
+  CHECK(r.status == 1);
+  const json rows = json::parse(r.out).at("rows");
+  REQUIRE(rows.size() == 11);
+  int ok = 0;
+  for (const json& row : rows) {
+    const double t = row.at("time").get<double>();
+    if (row.at("file") == "series.h5:/t045") {
+      CHECK(row.at("status") == "failed");
+      CHECK(row.at("error_kind") == "input");
+      CHECK_THAT(row.at("error").get<std::string>(),
+                 Catch::Contains("series.h5:/t045: dataset 'radius'") && Catch::Contains("radius[3][7]"));
+      continue;
+    }
+    ++ok;
+    REQUIRE(row.at("status") == "ok");
+    CHECK(row.at("time_source") == "file");
+    const double a = 0.5 + 0.4 * t / 90, rp = rPlus(a);
+    CHECK(row.at("area").get<double>() == Approx(8 * M_PI * rp).epsilon(1e-9));  // as the JSON series above
+    CHECK(row.at("spin").get<double>() == Approx(a).margin(1e-6));
+    CHECK(std::abs(row.at("gauss_bonnet_residual").get<double>()) < 1e-9);
+    // The approximate Killing vector's spin on the ~640-vertex mesh of ε = 0.35: a discretization estimate
+    // (docs/horizons.md §4d), measured within 1e-2 of a here; 3e-2 allows for other meshes of the same size.
+    CHECK(row.at("spin_killing").get<double>() == Approx(a).margin(3e-2));
+    const json record = json::parse(std::ifstream(out / "cases" / row.at("id").get<std::string>() / "record.json"));
+    CHECK(record.at("horizon").at("shape").at("form") == "coefficients");
+    CHECK(record.at("horizon").at("killing").at("degenerate") == false);
+  }
+  CHECK(ok == 10);
+  // A rerun over the same file keeps every step; a group's id hashes its shape, not the whole file.
+  const auto again = runConformesh("-q horizons " + file.string() + " -o " + out.string() + " --eps 0.35 --no-plot --json");
+  CHECK(json::parse(again.out).at("run").at("skipped") == 11);
+}
+
+TEST_CASE("horizons: generate horizon-series --hdf5 --sampled, and remesh --horizon FILE.h5:/group") {
+  const fs::path dir = conformesh::testing::scratchDir() / "horizons_hdf5_generate", file = dir / "s.h5";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  REQUIRE(runConformesh("-q generate horizon-series --hdf5 " + file.string() + " --steps 2 --a0 0.6 --a1 0.9 --sampled")
+              .status == 0);
+  const auto r = runConformesh("remesh --horizon " + file.string() + ":/t010.00 --param a=0.9 --eps 0.3 --json -o " +
+                               (dir / "o.ply").string());
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find("sampled radius fitted at l_max = 16") != std::string::npos);  // the residual is reported
+  const json h = json::parse(r.out).at("horizon");
+  // The spheroid sampled on a 34 × 68 Gauss–Legendre grid and projected at l_max = 16 (exact quadrature) is the
+  // l_max = 16 fit: Smarr's area to the fit's ~1e-12 (docs/horizons.md §3); 1e-9 as remesh --horizon.
+  CHECK(h.at("area").get<double>() == Approx(8 * M_PI * rPlus(0.9)).epsilon(1e-9));
+  CHECK(h.at("spin").get<double>() == Approx(0.9).margin(1e-6));
+  const json& shape = h.at("shape");  // how the shape was given, with the fit's residual at the nodes
+  CHECK(shape.at("form") == "sampled");
+  CHECK(shape.at("l_max") == 16);
+  CHECK(shape.at("theta_nodes") == "gauss-legendre");
+  CHECK(shape.at("grid") == json::array({34, 68}));
+  // The spheroid is not band-limited: the l_max = 16 projection misses it at the nodes by its l > 16 tail, measured
+  // 2.4e-10 at a = 0.9; 1e-8 leaves room, a wrong projection would be O(0.1).
+  CHECK(shape.at("max_residual").get<double>() < 1e-8);
+  CHECK(shape.at("rms_residual").get<double>() <= shape.at("max_residual").get<double>());
+  const auto bad = runConformesh("-q generate horizon-series --sampled -o " + (dir / "x").string());
+  CHECK(bad.status == 2);
 }
 
 // --lmax sets the degree of the generator's Strahlkorper fit: the Kerr-Schild spheroid is even in cos(theta) and

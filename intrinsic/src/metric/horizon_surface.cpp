@@ -3,14 +3,12 @@
 #include "conformesh/intrinsic/metric/horizon_surface.h"
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/metric/spatial_metric_registry.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "metric/family_checks.h"
 
@@ -67,6 +65,8 @@ Legendre normalizedLegendre(int L, double theta, int mMax) {
   throw InputError(describeAt(source, what));
 }
 
+}  // namespace
+
 // The radius must be positive for the surface to be star-shaped (an immersion). Checked on a Gauss–Legendre ×
 // uniform grid of (2 lMax + 8) × (4 lMax + 16) nodes: a sampling check, not a proof (docs/horizons.md §2).
 void checkPositiveRadius(const Strahlkorper& s, const std::string& source) {
@@ -83,16 +83,25 @@ void checkPositiveRadius(const Strahlkorper& s, const std::string& source) {
     }
 }
 
-}  // namespace
-
 std::string toString(YlmConvention c) {
-  return c == YlmConvention::Orthonormal ? "orthonormal" : "orthonormal-condon-shortley";
+  switch (c) {
+    case YlmConvention::Orthonormal: return "orthonormal";
+    case YlmConvention::OrthonormalCondonShortley: return "orthonormal-condon-shortley";
+    case YlmConvention::SpectreSpherepack: return "spectre-spherepack";
+  }
+  return "orthonormal";
 }
 YlmConvention parseYlmConvention(const std::string& name) {
-  if (name == "orthonormal") return YlmConvention::Orthonormal;
-  if (name == "orthonormal-condon-shortley") return YlmConvention::OrthonormalCondonShortley;
+  for (YlmConvention c :
+       {YlmConvention::Orthonormal, YlmConvention::OrthonormalCondonShortley, YlmConvention::SpectreSpherepack})
+    if (name == toString(c)) return c;
   throw InputError("unknown spherical-harmonic convention '" + name +
-                   "': expected orthonormal or orthonormal-condon-shortley");
+                   "': expected orthonormal, orthonormal-condon-shortley or spectre-spherepack");
+}
+double ylmConventionFactor(YlmConvention c, int m) {
+  if (c == YlmConvention::OrthonormalCondonShortley) return std::abs(m) % 2 ? -1.0 : 1.0;
+  if (c == YlmConvention::SpectreSpherepack) return m == 0 ? std::sqrt(M_PI / 2) : m > 0 ? std::sqrt(M_PI) : -std::sqrt(M_PI);
+  return 1.0;
 }
 
 std::vector<YlmJet> realYlmJets(int lMax, double theta, double phi) {
@@ -202,8 +211,7 @@ Strahlkorper parseStrahlkorperJson(const std::string& text, const std::string& s
       fail(source, "coefficients[" + std::to_string(i) + "]: expected [l, m, a_lm] (two integers and a number), found " +
                        t.dump());
     const int l = t[0].get<int>(), m = t[1].get<int>();
-    const double sign = convention == YlmConvention::OrthonormalCondonShortley && (std::abs(m) % 2) ? -1.0 : 1.0;
-    terms.push_back({l, m, sign * t[2].get<double>()});
+    terms.push_back({l, m, ylmConventionFactor(convention, m) * t[2].get<double>()});
   }
   try {
     Strahlkorper s(Eigen::Vector3d(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()), terms);
@@ -339,58 +347,6 @@ MetricJet HorizonSurfaceMetric::jet(double u, double v) const {
   return j;
 }
 
-std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetric(const std::string& shapePath, const std::string& spatialMetric,
-                                                        const std::map<std::string, double>& params) {
-  std::shared_ptr<const SpatialMetric> gamma = makeSpatialMetric(spatialMetric, params);
-  return std::make_unique<HorizonSurfaceMetric>(readStrahlkorperJson(shapePath), std::move(gamma));
-}
-
-HorizonFileMetadata readHorizonMetadata(const std::string& shapePath) {
-  std::ifstream in(shapePath);
-  if (!in) throw InputError(shapePath + ": cannot open the horizon shape file");
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    fail(shapePath, std::string("not valid JSON: ") + e.what());
-  }
-  HorizonFileMetadata m;
-  if (!j.is_object()) fail(shapePath, "expected a JSON object with keys center and coefficients");
-  if (j.contains("spatial_metric")) {
-    if (!j["spatial_metric"].is_string())
-      fail(shapePath, "'spatial_metric': expected a string, found " + j["spatial_metric"].dump());
-    m.spatialMetric = j["spatial_metric"].get<std::string>();
-    const std::string file = m.spatialMetric.substr(0, m.spatialMetric.find(":/"));
-    const std::filesystem::path folder = std::filesystem::path(shapePath).parent_path();
-    if (file.find('.') != std::string::npos && std::filesystem::path(file).is_relative() &&
-        std::filesystem::exists(folder / file))
-      m.spatialMetric = (folder / m.spatialMetric).string();
-  }
-  if (j.contains("params")) {
-    if (!j["params"].is_object()) fail(shapePath, "'params': expected an object of numbers, found " + j["params"].dump());
-    for (const auto& [k, v] : j["params"].items()) {
-      if (!v.is_number()) fail(shapePath, "'params." + k + "': expected a number, found " + v.dump());
-      m.params[k] = v.get<double>();
-    }
-  }
-  if (j.contains("time")) {
-    if (!j["time"].is_number()) fail(shapePath, "'time': expected a number, found " + j["time"].dump());
-    m.hasTime = true, m.time = j["time"].get<double>();
-  }
-  return m;
-}
-
-std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetricFromFile(const std::string& shapePath) {
-  const HorizonFileMetadata m = readHorizonMetadata(shapePath);
-  try {
-    return makeHorizonMetric(shapePath, m.spatialMetric, m.params);
-  } catch (const InputError& e) {
-    const std::string what = e.what();
-    if (what.find(shapePath) != std::string::npos) throw;
-    throw InputError(shapePath + ": " + what);
-  }
-}
+// makeHorizonMetric, readHorizonMetadata and makeHorizonMetricFromFile read every shape form: strahlkorper_io.cpp.
 
 }  // namespace conformesh::intrinsic

@@ -6,12 +6,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <sstream>
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/file_write.h"
 #include "conformesh/intrinsic/metric/horizon_surface.h"
+#include "conformesh/intrinsic/metric/strahlkorper_io.h"
 #include "conformesh/refine/pipeline/sweep_state.h"
 
 namespace conformesh::refine {
@@ -39,6 +41,20 @@ bool timeFromName(const std::string& stem, double& t) {
   return found;
 }
 
+// A step of an HDF5 series is "FILE.h5:/group"; of a folder, a JSON file.
+std::pair<std::string, std::string> splitStep(const std::string& file) {
+  const size_t colon = file.find(":/");
+  if (colon == std::string::npos) return {file, ""};
+  return {file.substr(0, colon), file.substr(colon + 1)};
+}
+// What the step's time is parsed from when its metadata has none: the file's stem, or the group's last component.
+std::string stepStem(const std::string& file) {
+  const auto [path, group] = splitStep(file);
+  if (group.empty()) return fs::path(path).stem().string();
+  const std::string last = group.substr(group.rfind('/') + 1);
+  return last.empty() ? fs::path(path).stem().string() : last;
+}
+
 HorizonStep stepOf(const std::string& file) {
   HorizonStep s{file, false, 0, "none"};
   try {
@@ -52,7 +68,7 @@ HorizonStep stepOf(const std::string& file) {
   } catch (const InputError&) {
     // a file that does not parse still gets its step (and its error in its row); its time comes from its name
   }
-  if (timeFromName(fs::path(file).stem().string(), s.time)) {
+  if (timeFromName(stepStem(file), s.time)) {
     s.hasTime = true;
     s.timeSource = "name";
   }
@@ -61,21 +77,42 @@ HorizonStep stepOf(const std::string& file) {
 
 }  // namespace
 
-std::vector<HorizonStep> listHorizonSteps(const std::string& folder) {
-  if (!fs::is_directory(folder))
-    throw InputError("horizons: " + folder + ": expected a folder of horizon shape files (*.json), found " +
-                     (fs::exists(folder) ? "a file" : "nothing"));
-  std::vector<HorizonStep> steps;
-  for (const auto& e : fs::directory_iterator(folder))
-    if (e.is_regular_file() && e.path().extension() == ".json" && !isTemporaryName(e.path().filename().string()))
-      steps.push_back(stepOf(e.path().string()));
-  if (steps.empty()) throw InputError("horizons: " + folder + ": no horizon shape file (*.json) in the folder");
+std::string horizonStepLabel(const std::string& file) {
+  const auto [path, group] = splitStep(file);
+  return fs::path(path).filename().string() + (group.empty() ? "" : ":" + group);
+}
+
+namespace {
+
+std::vector<HorizonStep> sortedSteps(std::vector<HorizonStep> steps) {
   std::sort(steps.begin(), steps.end(), [](const HorizonStep& a, const HorizonStep& b) {
     if (a.hasTime != b.hasTime) return a.hasTime;
     if (a.hasTime && a.time != b.time) return a.time < b.time;
     return a.file < b.file;
   });
   return steps;
+}
+
+}  // namespace
+
+std::vector<HorizonStep> listHorizonSteps(const std::string& folder) {
+  if (fs::is_regular_file(folder) && intrinsic::isHdf5ShapePath(folder)) {  // one group per step
+    std::vector<HorizonStep> steps;
+    for (const std::string& g : intrinsic::listHorizonShapeGroups(folder)) steps.push_back(stepOf(folder + ":" + g));
+    if (steps.empty())
+      throw InputError("horizons: " + folder + ": no group holding a horizon shape (a dataset 'coefficients' or " +
+                       "'radius', or a 'center' or 'time')");
+    return sortedSteps(std::move(steps));
+  }
+  if (!fs::is_directory(folder))
+    throw InputError("horizons: " + folder + ": expected a folder of horizon shape files (*.json) or an HDF5 file of shape groups, found " +
+                     (fs::exists(folder) ? "a file" : "nothing"));
+  std::vector<HorizonStep> steps;
+  for (const auto& e : fs::directory_iterator(folder))
+    if (e.is_regular_file() && e.path().extension() == ".json" && !isTemporaryName(e.path().filename().string()))
+      steps.push_back(stepOf(e.path().string()));
+  if (steps.empty()) throw InputError("horizons: " + folder + ": no horizon shape file (*.json) in the folder");
+  return sortedSteps(std::move(steps));
 }
 
 namespace {
@@ -105,13 +142,15 @@ SweepSpec horizonSeriesSpec(const std::vector<HorizonStep>& steps, const Horizon
   for (size_t k = 0; k < steps.size(); ++k) {
     // Named by the file, not its position: a step added to the folder later leaves the other ids (and records) as
     // they were, so a rerun over a growing series computes only the new steps.
-    studies.push_back({{"name", fs::path(steps[k].file).stem().string()},
-                       {"input", fs::path(steps[k].file).filename().string()},  // relative to the folder
+    studies.push_back({{"name", stepStem(steps[k].file)},
+                       {"input", horizonStepLabel(steps[k].file)},  // relative to the folder (of the HDF5 file)
                        {"eps", o.epsilon},
                        {"options", {{"no-check", !o.check}}}});
   }
   const json document = {{"studies", studies}};
-  SweepSpec spec = expandSweepSpec(document, (fs::path(o.series) / "series").string());
+  const bool hdf5 = fs::is_regular_file(o.series);
+  const fs::path folder = hdf5 ? fs::path(o.series).parent_path() : fs::path(o.series);
+  SweepSpec spec = expandSweepSpec(document, (folder / "series").string());
   for (size_t k = 0; k < spec.cases.size(); ++k) {
     SweepCase& c = spec.cases[k];
     c.horizonMetric = stepMetric(steps[static_cast<size_t>(c.study)], o);
@@ -136,14 +175,14 @@ json at(const json& j, std::initializer_list<const char*> path) {
 const std::vector<std::string>& columns() {
   static const std::vector<std::string> c = {
       "step", "file", "time", "time_source", "status", "error_kind", "vertices", "area", "mesh_area",
-      "irreducible_mass", "equatorial_circumference", "polar_circumference", "spin", "total_curvature",
+      "irreducible_mass", "equatorial_circumference", "polar_circumference", "spin", "spin_killing", "total_curvature",
       "smooth_total_curvature",
       "gauss_bonnet_residual", "e_G", "min_angle_deg", "wall_seconds", "id", "error"};  // free text last
   return c;
 }
 
 json rowOf(size_t k, const HorizonStep& s, const SweepCase& c, const std::optional<json>& r) {
-  json row = {{"step", k}, {"file", fs::path(s.file).filename().string()},
+  json row = {{"step", k}, {"file", horizonStepLabel(s.file)},
               {"time", s.hasTime ? json(s.time) : json(nullptr)}, {"time_source", s.timeSource}, {"id", c.id}};
   if (!r) {
     for (const std::string& col : columns())
@@ -167,6 +206,7 @@ json rowOf(size_t k, const HorizonStep& s, const SweepCase& c, const std::option
   row["equatorial_circumference"] = at(*r, {"horizon", "equatorial_circumference"});
   row["polar_circumference"] = at(*r, {"horizon", "polar_circumference"});
   row["spin"] = at(*r, {"horizon", "spin"});
+  row["spin_killing"] = at(*r, {"horizon", "killing", "spin_from_killing"});
   row["total_curvature"] = at(*r, {"smooth_reference", "mesh_total_curvature"});
   row["smooth_total_curvature"] = at(*r, {"smooth_reference", "smooth_total_curvature"});
   row["gauss_bonnet_residual"] = at(*r, {"quality", "gauss_bonnet_residual"});
@@ -237,24 +277,37 @@ std::vector<std::string> writeHorizonSeriesTable(const json& rows, const json& r
   return {csvPath, jsonPath};
 }
 
-std::vector<std::string> writeKerrHorizonSeries(const std::string& dir, int n, double a0, double a1, double mass,
-                                                double dt, int lMax) {
+namespace {
+
+void checkKerrSeries(int n, double a0, double a1, double mass, int lMax) {
   if (n < 1) throw InputError("generate horizon-series: --steps: expected >= 1, found " + std::to_string(n));
   if (!(mass > 0)) throw InputError("generate horizon-series: --M: expected > 0, found " + std::to_string(mass));
   if (!(std::abs(a0) < mass) || !(std::abs(a1) < mass))
     throw InputError("generate horizon-series: the spins must satisfy |a| < M (found a0 = " + std::to_string(a0) +
                      ", a1 = " + std::to_string(a1) + ", M = " + std::to_string(mass) + ")");
   if (lMax < 0) throw InputError("generate horizon-series: --lmax: expected >= 0, found " + std::to_string(lMax));
+}
+
+// The Kerr–Schild horizon r = r₊ of spin a: the spheroid (x² + y²)/(r₊² + a²) + z²/r₊² = 1.
+std::function<double(double, double)> kerrSchildHorizonRadius(double mass, double a) {
+  const double rp = mass + std::sqrt(mass * mass - a * a), R2 = rp * rp + a * a;
+  return [rp, R2](double theta, double) {
+    const double s = std::sin(theta), c = std::cos(theta);
+    return 1 / std::sqrt(s * s / R2 + c * c / (rp * rp));
+  };
+}
+
+}  // namespace
+
+std::vector<std::string> writeKerrHorizonSeries(const std::string& dir, int n, double a0, double a1, double mass,
+                                                double dt, int lMax) {
+  checkKerrSeries(n, a0, a1, mass, lMax);
   fs::create_directories(dir);
   std::vector<std::string> written;
   for (int k = 0; k < n; ++k) {
     const double a = n == 1 ? a0 : a0 + (a1 - a0) * k / (n - 1), t = k * dt;
-    const double rp = mass + std::sqrt(mass * mass - a * a), R2 = rp * rp + a * a;
-    const auto radius = [&](double theta, double) {
-      const double s = std::sin(theta), c = std::cos(theta);
-      return 1 / std::sqrt(s * s / R2 + c * c / (rp * rp));
-    };
-    const intrinsic::Strahlkorper shape = intrinsic::fitStrahlkorper(radius, lMax, Eigen::Vector3d::Zero());
+    const intrinsic::Strahlkorper shape =
+        intrinsic::fitStrahlkorper(kerrSchildHorizonRadius(mass, a), lMax, Eigen::Vector3d::Zero());
     json j = json::parse(intrinsic::strahlkorperToJson(shape));
     j["spatial_metric"] = "kerr-schild";
     j["params"] = {{"M", mass}, {"a", a}};
@@ -266,6 +319,40 @@ std::vector<std::string> writeKerrHorizonSeries(const std::string& dir, int n, d
     written.push_back(path);
   }
   return written;
+}
+
+std::vector<std::string> writeKerrHorizonSeriesHdf5(const std::string& path, int n, double a0, double a1, double mass,
+                                                    double dt, int lMax, bool sampled) {
+  checkKerrSeries(n, a0, a1, mass, lMax);
+  std::vector<intrinsic::HorizonShapeGroup> groups;
+  std::vector<std::string> names;
+  for (int k = 0; k < n; ++k) {
+    const double a = n == 1 ? a0 : a0 + (a1 - a0) * k / (n - 1), t = k * dt;
+    char name[64];
+    std::snprintf(name, sizeof name, "/t%06.2f", t);
+    intrinsic::HorizonShapeGroup g;
+    g.group = name;
+    g.record.meta.spatialMetric = "kerr-schild";
+    g.record.meta.params = {{"M", mass}, {"a", a}};
+    g.record.meta.hasTime = true, g.record.meta.time = t;
+    if (sampled) {  // the spheroid itself on a 2(l_max + 1) × 4(l_max + 1) Gauss–Legendre × uniform grid
+      g.record.sampled = true;
+      g.samples.nodes = intrinsic::ThetaNodes::GaussLegendre;
+      g.samples.lMax = lMax;
+      const std::vector<double> theta = intrinsic::thetaNodes(g.samples.nodes, 2 * (lMax + 1));
+      const int np = 4 * (lMax + 1);
+      g.samples.r.resize(static_cast<Eigen::Index>(theta.size()), np);
+      const auto r = kerrSchildHorizonRadius(mass, a);
+      for (size_t i = 0; i < theta.size(); ++i)
+        for (int j = 0; j < np; ++j) g.samples.r(static_cast<Eigen::Index>(i), j) = r(theta[i], 2 * M_PI * j / np);
+    } else {
+      g.record.shape = intrinsic::fitStrahlkorper(kerrSchildHorizonRadius(mass, a), lMax, Eigen::Vector3d::Zero());
+    }
+    groups.push_back(std::move(g));
+    names.push_back(path + ":" + name);
+  }
+  intrinsic::writeHorizonShapesHdf5(path, groups);
+  return names;
 }
 
 }  // namespace conformesh::refine

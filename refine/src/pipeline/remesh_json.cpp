@@ -354,6 +354,21 @@ nlohmann::json poleJson(const intrinsic::IntrinsicTriangulation& mesh, const int
 
 }  // namespace
 
+nlohmann::json horizonShapeJson(const intrinsic::HorizonShapeRecord& shape) {
+  const Eigen::Vector3d& c = shape.shape.center();
+  nlohmann::json j = {{"form", shape.sampled ? "sampled" : "coefficients"},
+                      {"l_max", shape.shape.lMax()},
+                      {"center", {c.x(), c.y(), c.z()}}};
+  if (shape.sampled) {
+    j["l_max"] = shape.fit.lMax;
+    j["theta_nodes"] = intrinsic::toString(shape.fit.nodes);
+    j["grid"] = {shape.fit.nTheta, shape.fit.nPhi};
+    j["max_residual"] = shape.fit.maxResidual;
+    j["rms_residual"] = shape.fit.rmsResidual;
+  }
+  return j;
+}
+
 nlohmann::json killingJson(const intrinsic::IntrinsicTriangulation& mesh, const std::vector<Eigen::Vector3d>& reference,
                            const intrinsic::ChartDomain& domain, const intrinsic::KillingVectorOptions& options) {
   intrinsic::KillingVectorResult k;

@@ -19,6 +19,7 @@
 #include "conformesh/intrinsic/io/vtk_writer.h"
 #include "conformesh/intrinsic/measure/gaussian_curvature_measure.h"
 #include "conformesh/intrinsic/metric/horizon_surface.h"
+#include "conformesh/intrinsic/metric/strahlkorper_io.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 #include "conformesh/intrinsic/metric/metric_registry.h"
 #include "conformesh/intrinsic/metric/sampled_field_io.h"
@@ -127,6 +128,9 @@ json computeMetricCase(const SweepCase& c, const SweepRunOptions& options,
   if (c.kind == SweepInputKind::Horizon) {
     stage("horizon diagnostics");
     j["horizon"] = horizonJson(*metric, j["total_area"].get<double>());
+    j["horizon"]["shape"] = horizonShapeJson(intrinsic::readHorizonShape(c.input));
+    stage("approximate Killing vector on the output mesh (axis, orbits)");
+    j["horizon"]["killing"] = killingJson(r.mesh, r.reference, metric->domain());  // as remesh --horizon --json
     const intrinsic::HorizonFileMetadata meta = intrinsic::readHorizonMetadata(c.input);
     j["time"] = meta.hasTime ? json(meta.time) : json(nullptr);
   }

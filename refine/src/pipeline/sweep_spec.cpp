@@ -13,6 +13,7 @@
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_registry.h"
+#include "conformesh/intrinsic/metric/strahlkorper_io.h"
 
 namespace conformesh::refine {
 
@@ -129,6 +130,20 @@ class StudyReader {
   int index_;
 };
 
+// The content a case id hashes: the file's bytes; for a shape group of an HDF5 file the group's shape and metadata
+// (so that a rerun over a file with groups added recomputes only the new ones), the file's bytes if it does not read.
+std::string contentHash(const std::string& path, const std::string& group, bool horizon) {
+  if (!horizon || group.empty()) return fnv1a64Hex(readBytes(path));
+  try {
+    const intrinsic::HorizonShapeRecord rec = intrinsic::readHorizonShapeHdf5(path + group);
+    json meta = {{"spatial_metric", rec.meta.spatialMetric}, {"params", rec.meta.params},
+                 {"time", rec.meta.hasTime ? json(rec.meta.time) : json(nullptr)}};
+    return fnv1a64Hex(intrinsic::strahlkorperToJson(rec.shape) + meta.dump());
+  } catch (const InputError&) {
+    return fnv1a64Hex(readBytes(path) + group);
+  }
+}
+
 struct ResolvedInput {
   SweepInputKind kind;
   std::string input;  // family name or resolved path
@@ -168,10 +183,12 @@ std::vector<ResolvedInput> resolveInput(const StudyReader& r, const std::string&
     const bool mesh = isMeshPath(p);
     if (mesh && !group.empty()) r.fail(key, "'" + text + "': a group (':/...') applies to HDF5 fields, not meshes");
     const std::string name = fs::path(p).filename().string() + group;
-    // A .json file is a horizon shape (a Strahlkörper naming its own spatial metric, horizon_surface.h).
-    const bool horizon = !mesh && group.empty() && fs::path(p).extension() == ".json";
+    // A .json file is a horizon shape (a Strahlkörper naming its own spatial metric, horizon_surface.h), and so is
+    // an HDF5 group holding `coefficients` or `radius` (strahlkorper_io.h); other HDF5 inputs are metric fields.
+    const bool horizon = !mesh && (group.empty() ? fs::path(p).extension() == ".json"
+                                                 : intrinsic::hdf5GroupHoldsShape(p + group));
     out.push_back({mesh ? SweepInputKind::Mesh : horizon ? SweepInputKind::Horizon : SweepInputKind::Field, p + group,
-                   json{{"file", name}, {"content", fnv1a64Hex(readBytes(p))}}, slugOf(fs::path(p).stem().string())});
+                   json{{"file", name}, {"content", contentHash(p, group, horizon)}}, slugOf(fs::path(p).stem().string())});
   }
   return out;
 }

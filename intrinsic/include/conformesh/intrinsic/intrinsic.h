@@ -36,6 +36,7 @@
 #include "conformesh/intrinsic/mesh/triangle_geometry.h"
 #include "conformesh/intrinsic/metric/field_check.h"
 #include "conformesh/intrinsic/metric/horizon_surface.h"
+#include "conformesh/intrinsic/metric/strahlkorper_io.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
 #include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"

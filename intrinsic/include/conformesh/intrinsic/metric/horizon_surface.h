@@ -22,9 +22,17 @@ namespace conformesh::intrinsic {
 //   Y_l0 = N_l0 P_l(cos θ),  Y_lm = √2 N_lm P_l^m(cos θ) cos(mφ),  Y_l,−m = √2 N_lm P_l^m(cos θ) sin(mφ)  (m > 0),
 // N_lm = √((2l+1)/(4π) (l−m)!/(l+m)!), P_l^m(x) = (1−x²)^(m/2) d^m P_l/dx^m (no (−1)^m). Files may say their
 // coefficients carry the phase (`condon-shortley`): then a_lm is multiplied by (−1)^m on reading.
-enum class YlmConvention { Orthonormal, OrthonormalCondonShortley };
-std::string toString(YlmConvention c);    // "orthonormal", "orthonormal-condon-shortley"
+// SpectreSpherepack: SpECTRE's ylm::Spherepack coefficients as documented in its SpherepackIterator,
+//   f = ½ Σ_l P̄_l^0 a(0,l) + Σ_{m≥1} Σ_l P̄_l^m (a(m,l) cos mφ − b(m,l) sin mφ),
+//   P̄_l^m = (−1)^m √((2l+1)(l−m)!/(2(l+m)!)) P_l^m (Jackson's P_l^m, with the phase) = √(2π) N_lm P_l^m (ours),
+// given as [l, m, a(m,l)] for m ≥ 0 and [l, −m, b(m,l)] for the sine terms; so a_l0 = √(π/2) a(0,l),
+// a_lm = √π a(m,l), a_l,−m = −√π b(m,l) (docs/horizons.md §2).
+enum class YlmConvention { Orthonormal, OrthonormalCondonShortley, SpectreSpherepack };
+// "orthonormal", "orthonormal-condon-shortley", "spectre-spherepack"
+std::string toString(YlmConvention c);
 YlmConvention parseYlmConvention(const std::string& name);  // InputError naming the value otherwise
+// The factor that takes a coefficient of (l, m) in convention c to the orthonormal one.
+double ylmConventionFactor(YlmConvention c, int m);
 
 // Y_lm and its θ, φ derivatives for one (l, m) at one point (for tests and the fit).
 struct YlmJet {
@@ -63,11 +71,14 @@ class Strahlkorper {
 };
 
 // Reads a Strahlkörper from JSON: {"center": [x, y, z], "coefficients": [[l, m, a_lm], ...], optional
-// "convention": "orthonormal" (default) | "orthonormal-condon-shortley"}. Throws InputError naming `source` and the
+// "convention": "orthonormal" (default) | "orthonormal-condon-shortley" | "spectre-spherepack"}. Throws InputError naming `source` and the
 // key or the coefficient's index (expected vs found), and when the radius is not positive on the check grid
 // (docs/horizons.md §2).
 Strahlkorper parseStrahlkorperJson(const std::string& text, const std::string& source);
 Strahlkorper readStrahlkorperJson(const std::string& path);
+// InputError naming `source` when the radius is not positive on the (2 lMax + 8) × (4 lMax + 16) Gauss–Legendre ×
+// uniform check grid (a sampling check, not a proof; docs/horizons.md §2).
+void checkPositiveRadius(const Strahlkorper& s, const std::string& source);
 // The JSON form (orthonormal convention, 17 significant digits).
 std::string strahlkorperToJson(const Strahlkorper& s);
 
@@ -101,7 +112,7 @@ class HorizonSurfaceMetric : public SmoothMetric {
   std::shared_ptr<const SpatialMetric> gamma_;
 };
 
-// What the CLI builds from `--horizon SHAPE.json --spatial-metric NAME --param k=v ...`: the shape read from the file,
+// What the CLI builds from `--horizon SHAPE` (any form of strahlkorper_io.h's readHorizonShape) --spatial-metric NAME --param k=v ...`: the shape read from the file,
 // the spatial metric by name (makeSpatialMetric). Throws InputError as those do.
 std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetric(const std::string& shapePath, const std::string& spatialMetric,
                                                         const std::map<std::string, double>& params);

@@ -15,7 +15,7 @@
 namespace conformesh::refine {
 
 struct HorizonSeriesOptions {
-  std::string series;         // a folder of *.json shape files
+  std::string series;         // a folder of *.json shape files, or an HDF5 file with one shape group per step
   std::string spatialMetric;  // "" = each file's own "spatial_metric" (default kerr-schild); else for every step
   std::map<std::string, double> params;  // --param: over the file's "params"
   double epsilon = 0.2;                  // remesh ε of every step
@@ -34,9 +34,14 @@ struct HorizonStep {
   std::string timeSource;  // "file" | "name" | "none"
 };
 
-// The steps of options.series, ordered by time (steps without a time last, then by name). Throws InputError when
-// the folder does not exist or holds no .json file.
+// The steps of options.series, ordered by time (steps without a time last, then by name): the .json files of a
+// folder, or the shape groups of one HDF5 file (listHorizonShapeGroups; step file "FILE.h5:/group", its time the
+// group's attribute `time`, else the last number in the group's name). Throws InputError when the folder does not
+// exist or holds no .json file, or the HDF5 file no shape group.
 std::vector<HorizonStep> listHorizonSteps(const std::string& folder);
+
+// How a step is named in the table and in errors: the JSON file's name, or "FILE.h5:/group".
+std::string horizonStepLabel(const std::string& file);
 
 // The sweep specification of the series: one study per step, named by its file's stem (so that
 // a step added later leaves the other steps' ids unchanged), with the steps' spatial metric and
@@ -63,5 +68,12 @@ std::vector<std::string> writeHorizonSeriesTable(const nlohmann::json& rows, con
 // the files written. Throws InputError for n < 1, |a| ≥ M or lMax < 0.
 std::vector<std::string> writeKerrHorizonSeries(const std::string& dir, int n, double a0, double a1, double mass,
                                                 double dt, int lMax);
+
+// The same series in one HDF5 file, one group per step, "/t<time>" (strahlkorper_io.h's layout, attributes time,
+// spatial_metric, param_M, param_a): the fitted coefficients, or with `sampled` the spheroid's radius itself on a
+// 2(lMax + 1) × 4(lMax + 1) Gauss–Legendre × uniform θ–φ grid with attribute l_max = lMax (fitted on reading by the exact quadrature).
+// Returns "FILE.h5:/group" of each step.
+std::vector<std::string> writeKerrHorizonSeriesHdf5(const std::string& path, int n, double a0, double a1, double mass,
+                                                    double dt, int lMax, bool sampled);
 
 }  // namespace conformesh::refine

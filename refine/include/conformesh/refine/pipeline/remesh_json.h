@@ -13,6 +13,7 @@
 #include "conformesh/intrinsic/measure/smooth_reference.h"
 #include "conformesh/intrinsic/mesh/mesh_summary.h"
 #include "conformesh/intrinsic/metric/smooth_metric.h"
+#include "conformesh/intrinsic/metric/strahlkorper_io.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
 #include "conformesh/refine/pipeline/convergence_study.h"
@@ -70,6 +71,10 @@ nlohmann::json smoothReferenceJson(const intrinsic::SmoothReferenceComparison& c
 // min_polar_circumference, circumference_ratio, spin (null outside Kerr's range), curves.
 nlohmann::json horizonJson(const intrinsic::SmoothMetric& metric, double meshArea,
                            const intrinsic::HorizonDiagnosticsOptions& options = {});
+// The "shape" dict inside "horizon": how the Strahlkörper was given (strahlkorper_io.h) — form ("coefficients" or
+// "sampled"), l_max, center, and for a sampled radius theta_nodes, grid [nθ, nφ], max_residual and rms_residual of
+// the fit at the nodes.
+nlohmann::json horizonShapeJson(const intrinsic::HorizonShapeRecord& shape);
 // The "killing" dict inside "horizon" (killing_vector.h on the output triangulation T1, from its edge lengths alone):
 // eigenvalue (λ₁, 1/length²), scaled_eigenvalues (λ_k·A/4π, k = 1..3), degenerate, and unless degenerate north_pole /
 // south_pole ({vertex, u, v}: the extremal vertices of z refined on `reference`, in the chart (u, v) = (φ, θ)),
