@@ -557,7 +557,8 @@ void NewtonFlowSolver::throwStalled(const std::vector<double>& u0, const NewtonS
   std::ostringstream msg;
   msg.precision(3);
   msg << "discrete Ricci flow stalled at Newton step " << info.step
-      << (usesEnergy() ? ": no step decreases the energy, max |Θ̂ − Θ| = " : ": no step decreases |Θ̂ − Θ|, max |Θ̂ − Θ| = ")
+      << (usesEnergy() ? ": no step decreases the energy, max |Θ̂ − Θ| = "
+                       : ": no step decreases |Θ̂ − Θ|, max |Θ̂ − Θ| = ")
       << maxAbs_ << " rad, tolerance " << report_.effectiveTolerance << "; " << worstVertex();
   throw ConvergenceError(msg.str());
 }

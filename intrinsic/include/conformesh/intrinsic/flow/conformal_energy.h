@@ -17,8 +17,8 @@ namespace conformesh::intrinsic {
 double lobachevsky(double x);
 
 // E(u) = Σ_v Θ̂_v u_v + Σ_f [Σ_k (α_k λ_k + 2 Л(α_k)) − (π/2) Σ_k λ_k], λ_k = 2 log ℓ_k, over the non-frozen faces of
-// the metric's current triangulation (which should be Delaunay: then E is C¹ and convex in u, with ∂E/∂u_v = Θ̂_v − Θ_v).
-// Vertices whose target is not finite are left out of the first sum (they only add constants where u is held).
+// the metric's current triangulation (which should be Delaunay: then E is C¹ and convex in u, with ∂E/∂u_v = Θ̂_v −
+// Θ_v). Vertices whose target is not finite are left out of the first sum (they only add constants where u is held).
 // `magnitude`, when given, receives Σ of the absolute values of the terms, the scale of E's round-off.
 // Throws InputError for a non-Euclidean background or a target of the wrong size.
 double conformalEnergy(const DiscreteConformalMetric& metric, const std::vector<double>& targetAngleSum,
