@@ -35,4 +35,8 @@ void evaluateFaces(const DiscreteConformalMetric& metric, std::vector<double>& l
 // constant).
 void angleJacobian(Background bg, const FaceGeometry& g, double J[3][3]);
 
+// Σ over the non-frozen faces of Σ_k (α_k − π/2) λ_k + 2 Л(α_k), λ_k = 2 log L_k: the face part of conformalEnergy
+// (conformal_energy.h) from faces evaluated at the current u; adds Σ |terms| + |λ_k| to `magnitude` (round-off scale).
+double faceEnergy(const DiscreteConformalMetric& metric, const std::vector<FaceGeometry>& faces, double& magnitude);
+
 }  // namespace conformesh::intrinsic::detail

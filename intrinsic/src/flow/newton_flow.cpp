@@ -429,11 +429,17 @@ Eigen::VectorXd NewtonFlowSolver::solveCircleDomain(const Eigen::MatrixXd& U, co
 
 // === line search
 
-// Armijo backtracking on ½|r|² from u0 along δ (the Newton direction has slope −|r|²), halving t. Special exits: with
+// Armijo backtracking from u0 along δ, halving t: on ½|r|² (the Newton direction has slope −|r|²), and for Euclidean
+// problems without circle loops also on the convex energy (acceptByEnergy). Special exits: with
 // returnAtDegenerateStall, a return to a start with degenerate faces (report_.stoppedAtDegenerate); for circle domains
 // with the gauge still off, switching it on at the start; otherwise a stall below minStep throws.
 double NewtonFlowSolver::lineSearch(const Eigen::VectorXd& delta, NewtonStepInfo& info) {
   const std::vector<double> u0 = metric_.u();
+  if (usesEnergy()) {
+    double magnitude = 0;
+    energy0_ = energyHere(magnitude);
+    slope0_ = r_.dot(delta);
+  }
   double t = 1.0;
   const double norm2Old = norm2_;
   bool startChecked = false;
@@ -462,12 +468,55 @@ bool NewtonFlowSolver::tryStep(const std::vector<double>& u0, const Eigen::Vecto
   if (flips > 0) patternValid_ = false;
   double newMax = 0, newNorm2 = 0;
   evaluateResidual(newMax, newNorm2);
-  if (std::isfinite(newNorm2) && newNorm2 <= (1 - 2 * options_.armijo * t) * norm2Old) {
+  const bool accept = usesEnergy() ? acceptByEnergy(t, newNorm2, norm2Old)
+                                   : std::isfinite(newNorm2) && newNorm2 <= (1 - 2 * options_.armijo * t) * norm2Old;
+  if (accept) {
     maxAbs_ = newMax;
     norm2_ = newNorm2;
     return true;
   }
   return false;
+}
+
+// E(u) − (terms constant in the unknowns) from the faces of the last evaluateResidual (conformal_energy.h).
+double NewtonFlowSolver::energyHere(double& magnitude) const {
+  magnitude = 0;
+  double energy = detail::faceEnergy(metric_, work_->faces, magnitude);
+  for (int v : equations_) {
+    energy += targetSum_[v] * metric_.u()[v];
+    magnitude += std::abs(targetSum_[v] * metric_.u()[v]);
+  }
+  return energy;
+}
+
+// A step is accepted when ½|r|² decreases by Armijo (as without the energy) or when the convex energy does,
+// E(u0 + tδ) ≤ E(u0) + c t rᵀδ (docs/ricci_flow.md §2 "The energy and the line search"); the energy test only counts
+// while the expected decrease ½ t |rᵀδ| is above E's round-off (64 ε Σ|terms|). The energy descends along every
+// Newton direction (rᵀδ = −rᵀH⁻¹r < 0), so steps that the residual test rejects far from the solution — where the
+// residual may grow on the way to the minimum — are still taken.
+bool NewtonFlowSolver::acceptByEnergy(double t, double newNorm2, double norm2Old) {
+  if (!std::isfinite(newNorm2)) return false;
+  if (newNorm2 <= (1 - 2 * options_.armijo * t) * norm2Old) return true;
+  double magnitude = 0;
+  const double dE = energyHere(magnitude) - energy0_;
+  const double roundOff = 64 * std::numeric_limits<double>::epsilon() * magnitude;
+  return std::isfinite(dE) && 0.5 * t * std::abs(slope0_) > roundOff && dE <= options_.armijo * t * slope0_;
+}
+
+std::string NewtonFlowSolver::worstVertex() const {
+  int worst = -1;
+  double err = 0;
+  for (int v : equations_) {
+    const double rv = targetSum_[v] - work_->sums[v];
+    if (worst < 0 || std::abs(rv) > std::abs(err)) {
+      worst = v;
+      err = rv;
+    }
+  }
+  std::ostringstream msg;
+  msg.precision(3);
+  msg << "worst at vertex " << worst << " (Θ̂ − Θ = " << err << " rad)";
+  return msg.str();
 }
 
 void NewtonFlowSolver::restoreStart(const std::vector<double>& u0) {
@@ -508,7 +557,9 @@ void NewtonFlowSolver::throwStalled(const std::vector<double>& u0, const NewtonS
   std::ostringstream msg;
   msg.precision(3);
   msg << "discrete Ricci flow stalled at Newton step " << info.step
-      << ": no step decreases |Θ̂ − Θ|, max |Θ̂ − Θ| = " << maxAbs_ << " rad, tolerance " << report_.effectiveTolerance;
+      << (usesEnergy() ? ": no step decreases the energy, max |Θ̂ − Θ| = "
+                       : ": no step decreases |Θ̂ − Θ|, max |Θ̂ − Θ| = ")
+      << maxAbs_ << " rad, tolerance " << report_.effectiveTolerance << "; " << worstVertex();
   throw ConvergenceError(msg.str());
 }
 
@@ -519,7 +570,8 @@ void NewtonFlowSolver::checkStepCap() const {
   std::ostringstream msg;
   msg.precision(3);
   msg << "discrete Ricci flow did not converge in " << options_.maxNewtonSteps
-      << " Newton steps: max |Θ̂ − Θ| = " << maxAbs_ << " rad, tolerance " << report_.effectiveTolerance;
+      << " Newton steps: max |Θ̂ − Θ| = " << maxAbs_ << " rad, tolerance " << report_.effectiveTolerance << "; "
+      << worstVertex();
   throw ConvergenceError(msg.str());
 }
 

@@ -58,10 +58,16 @@ class NewtonFlowSolver {
   void addCircleLoopTerms(int i, Eigen::MatrixXd& U, Eigen::MatrixXd& V);
   Eigen::VectorXd solveCircleDomain(const Eigen::MatrixXd& U, const Eigen::MatrixXd& V);
 
-  // --- line search (Armijo on ½|r|²); returns the accepted step length
+  // --- line search (Armijo on the convex energy where it is defined, else on ½|r|²); returns the accepted step length
   double lineSearch(const Eigen::VectorXd& delta, NewtonStepInfo& info);
   bool tryStep(const std::vector<double>& u0, const Eigen::VectorXd& delta, double t, double norm2Old,
                NewtonStepInfo& info);
+  // The energy test: Euclidean, no circle loops, and not the genus-0 construction (allowDegenerateFaces), whose star
+  // repair takes a rejected full step as its signal (docs/ricci_flow.md §2 "The energy and the line search").
+  bool usesEnergy() const { return bg_ == Background::Euclidean && !circles_ && !options_.allowDegenerateFaces; }
+  double energyHere(double& magnitude) const;  // conformalEnergy at the last evaluated point (up to a constant)
+  bool acceptByEnergy(double t, double newNorm2, double norm2Old);
+  std::string worstVertex() const;  // "vertex v (Θ̂ − Θ = …)" at the last evaluated point
   void restoreStart(const std::vector<double>& u0);
   bool stopAtDegenerateStart(const std::vector<double>& u0);
   void switchOnGaugeAtStall(const std::vector<double>& u0);
@@ -120,6 +126,8 @@ class NewtonFlowSolver {
   bool patternValid_ = false;
 
   double maxAbs_ = 0, norm2_ = 0;  // max |r| and |r|² at the current u
+  // Energy line search: E, Σ|terms| and the slope rᵀδ at the step's start u0.
+  double energy0_ = 0, slope0_ = 0;
 };
 
 }  // namespace conformesh::intrinsic

@@ -4,15 +4,17 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
-#include "conformesh/intrinsic/mesh/curvature.h"
-#include "conformesh/intrinsic/flow/discrete_conformal.h"
 #include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/flow/conformal_energy.h"
+#include "conformesh/intrinsic/flow/discrete_conformal.h"
+#include "conformesh/intrinsic/flow/ricci_flow.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/intrinsic_flips.h"
 #include "conformesh/intrinsic/mesh/mesh_generators.h"
-#include "conformesh/intrinsic/flow/ricci_flow.h"
 
 using namespace conformesh::intrinsic;
 
@@ -265,4 +267,84 @@ TEST_CASE("a solver cache shared by Dirichlet problems with different fixed sets
     CHECK(std::abs(sums[v] - 2 * M_PI) < 1e-10);
     CHECK(std::abs(shared.u()[v] - alone.u()[v]) < 1e-7);  // both within 1e-10 rad of the unique solution
   }
+}
+
+// --- the convex energy behind the line search (conformal_energy.h)
+
+TEST_CASE("Milnor's Lobachevsky function: closed values, π-periodic, odd, Л' = −log|2 sin x|") {
+  // Л(π/4) = G/2 (Catalan's constant), Л(π/6) = (3/2) Л(π/3), Л(π/2) = 0; to 1e-15 (a few ulps of the series).
+  const double catalan = 0.915965594177219015054603514932;
+  CHECK(std::abs(lobachevsky(M_PI / 4) - catalan / 2) < 1e-15);
+  CHECK(std::abs(lobachevsky(M_PI / 6) - 1.5 * lobachevsky(M_PI / 3)) < 1e-15);
+  CHECK(std::abs(lobachevsky(M_PI / 2)) < 1e-15);
+  CHECK(std::abs(lobachevsky(0.3 + M_PI) - lobachevsky(0.3)) < 1e-15);
+  CHECK(std::abs(lobachevsky(-0.7) + lobachevsky(0.7)) < 1e-15);
+  // Central differences have error h² Л'''(x)/6 + O(h⁴): it falls by ≈ 4 when h halves (h = 1e-2, 5e-3).
+  for (double x : {0.1, 0.5, 1.0, 1.4, 2.5, 3.0}) {
+    auto fd = [&](double h) { return (lobachevsky(x + h) - lobachevsky(x - h)) / (2 * h); };
+    const double exact = -std::log(2 * std::sin(x));
+    const double e1 = std::abs(fd(1e-2) - exact), e2 = std::abs(fd(5e-3) - exact);
+    INFO("x = " << x << ": errors " << e1 << ", " << e2);
+    CHECK(e1 < 1.05 * 1e-4 / (6 * std::sin(x) * std::sin(x)));  // the leading term h² Л'''/6, Л''' = 1/sin²x
+    CHECK(std::log2(e1 / e2) > 1.9);
+    CHECK(std::log2(e1 / e2) < 2.1);
+  }
+}
+
+TEST_CASE("the conformal energy's gradient is Θ̂ − Θ (central differences of order 2, across Ptolemy flips)") {
+  DiscreteConformalMetric metric(perturbedTorus(), Background::Euclidean);
+  const int nV = metric.nVertices();
+  std::vector<double> target(nV, 2 * M_PI);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (double& u : metric.u()) u = 0.5 * uniform(rng);
+  metric.makeDelaunay(1e-12, nullptr);
+  const std::vector<double> u0 = metric.u();
+  std::vector<double> d(nV);
+  for (double& x : d) x = uniform(rng);
+  auto energyAt = [&](double t, std::int64_t* flips) {
+    for (int v = 0; v < nV; ++v) metric.u()[v] = u0[v] + t * d[v];
+    const std::int64_t n = metric.makeDelaunay(1e-12, nullptr);
+    if (flips) *flips += n;
+    return conformalEnergy(metric, target);
+  };
+  energyAt(0, nullptr);
+  const std::vector<double> sums = flowAngleSums(metric);
+  double slope = 0;  // (Θ̂ − Θ)·d
+  for (int v = 0; v < nV; ++v) slope += (target[v] - sums[v]) * d[v];
+  std::int64_t flips = 0;
+  auto fd = [&](double h) { return (energyAt(h, &flips) - energyAt(-h, &flips)) / (2 * h); };
+  const double e1 = std::abs(fd(0.02) - slope), e2 = std::abs(fd(0.01) - slope), e3 = std::abs(fd(0.005) - slope);
+  INFO("slope " << slope << ", FD errors " << e1 << ", " << e2 << ", " << e3 << ", flips " << flips);
+  CHECK(flips > 0);  // the differences cross Delaunay cells: E is C¹ across the flips
+  // Observed order log2(e1/e2), log2(e2/e3) ≈ 2 (± 0.3: the third derivative jumps at flips).
+  CHECK(std::log2(e1 / e2) > 1.7);
+  CHECK(std::log2(e2 / e3) > 1.7);
+  CHECK(e3 < 1e-4 * std::abs(slope));
+  // Convex along the line: second differences over 200 points of t ∈ [−1, 1] are ≥ −1e-9 (round-off of E ~ 1e-12).
+  std::vector<double> E;
+  for (int i = 0; i <= 200; ++i) E.push_back(energyAt(-1 + 0.01 * i, &flips));
+  double worst = 0;
+  for (int i = 1; i < 200; ++i) worst = std::min(worst, E[i - 1] - 2 * E[i] + E[i + 1]);
+  CHECK(worst > -1e-9);
+}
+
+TEST_CASE("the flat-torus flow descends the convex energy at every Newton step and converges") {
+  DiscreteConformalMetric metric(perturbedTorus(), Background::Euclidean);
+  const ConformalTarget target = flatTarget(metric.mesh());
+  std::vector<double> energies;
+  double magnitude = 0;
+  energies.push_back(conformalEnergy(metric, target.angleSum, &magnitude));
+  RicciFlowOptions options;
+  options.onStep = [&](const NewtonStepInfo&) { energies.push_back(conformalEnergy(metric, target.angleSum)); };
+  const RicciFlowReport report = solveConformalFlow(metric, target, options);
+  CHECK(report.maxResidual <= report.effectiveTolerance);
+  // Each accepted step lowers E or (near the solution, where the residual test decides) changes it by at most its
+  // round-off, 64 ε Σ|terms| (conformal_energy.h, docs/ricci_flow.md §2).
+  const double roundOff = 64 * std::numeric_limits<double>::epsilon() * magnitude;
+  for (std::size_t i = 1; i < energies.size(); ++i) {
+    INFO("step " << i << ": E " << energies[i - 1] << " -> " << energies[i]);
+    CHECK(energies[i] <= energies[i - 1] + roundOff);
+  }
+  CHECK(energies.size() >= 3);
 }

@@ -10,6 +10,7 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/flow/boundary_flattening.h"
 #include "conformesh/intrinsic/flow/circle_packing.h"
+#include "conformesh/intrinsic/flow/conformal_energy.h"
 #include "conformesh/intrinsic/flow/discrete_conformal.h"
 #include "conformesh/intrinsic/flow/flow_correspondence.h"
 #include "conformesh/intrinsic/flow/planar_layout.h"

@@ -1,7 +1,9 @@
 // ricci_flow.h — the discrete Yamabe/Ricci flow by vertex scaling: Newton's method for the conformal factor u whose
 // angle sums Θ are a prescribed Θ̂ (interior 2π − K̂, boundary π − k̂), the critical point of the convex energy of
 // Springborn–Schröder–Pinkall 2008 / Bobenko–Pinkall–Springborn 2015, with Ptolemy flips keeping the triangulation
-// Delaunay (Gu–Luo–Sun–Wu 2018) and an Armijo line search on ½|Θ̂ − Θ|².
+// Delaunay (Gu–Luo–Sun–Wu 2018) and an Armijo line search that accepts a decrease of ½|Θ̂ − Θ|² or, for Euclidean
+// problems without circle loops, of that energy (conformal_energy.h; docs/ricci_flow.md §2 "The energy and the line
+// search"). Hyperbolic problems and circle loops (whose targets follow the metric: no energy) use ½|Θ̂ − Θ|² alone.
 //
 // Touches only the DiscreteConformalMetric it is given (u and connectivity), the correspondence log and an optional
 // shared solver cache. Derivations, the linear algebra and the stopping rule: docs/ricci_flow.md §2 (circle loops
@@ -73,7 +75,7 @@ struct RicciFlowOptions {
   // Optional: share the factor with other solves (makeFlowSolverCache). Dirichlet vertices then stay unknowns with
   // identity rows, so that changes of the Dirichlet set keep the dimension. Ignored for circle loops.
   std::shared_ptr<FlowSolverCache> solverCache;
-  // Armijo constant on the merit ½|r|² (0 < armijo < 0.5) and the smallest step length before giving up
+  // Armijo constant on the merit ½|r|² and on the energy (0 < armijo < 0.5) and the smallest step length before giving up
   // (0 < minStep ≤ 1).
   double armijo = 1e-4;
   double minStep = 1e-12;
