@@ -3,8 +3,8 @@
 // --omega1 --omega2 --keep-basis, torus --alternate; `layout --centre-vertex --direction-vertex --pixels`; `view
 // --vtu`; `repair --merge-tolerance --area-tolerance`; `generate genus --cell`; `discretize --chart-lengths`; `view
 // --three-dir --viewer-dir`; `embed --landmarks --regularizer`; `refine`/`remesh`/`convergence --smoothing-rule`;
-// `remesh --region --check-sample`; `generate horizon-series --lmax`. Each case checks a closed form or a documented property of the output, not only
-// the exit status.
+// `remesh --region --check-sample`; `generate horizon-series --lmax`. Each case checks a closed form or a documented
+// property of the output, not only the exit status.
 #include <catch2/catch.hpp>
 
 #include "support/cli_runner.h"
