@@ -281,6 +281,39 @@ TEST_CASE("mean circumradius scales like 1/sqrt(V) over a sweep of epsilon (pape
   CHECK(slope == Approx(-0.5).margin(0.03));
 }
 
+TEST_CASE("the size test's threshold is eps * exp(-lambda) itself: inputs 0.5 % above it refine, 0.5 % below do not") {
+  // The bound R ≤ ε·e^(−λ) cannot catch a size test that is too lax when the output's largest circumradius sits well
+  // below ε (it does: 0.88ε and less, after the cascade of insertions), so the threshold itself is pinned: the
+  // hexagonal flat torus is tiled by equilateral triangles of side s = 1/n, all of circumradius R₀ = s/√3 and ratio
+  // R/ℓ = 1/√3 < B (shape-good, Delaunay). The refinement inserts a point iff some face has R > ε·e^(−λ(c)): with
+  // ε·e^(−λ) = R₀/(1 + δ) every face is too large and the output's circumradii must all fall to ε·e^(−λ); with
+  // R₀/(1 − δ) none is and the output is the input, no insertion. δ = 0.5 %: a threshold off by more than 0.5 % in
+  // either direction (e.g. ε·1.01, ε·0.99, or e^(−λ) evaluated elsewhere than at a constant λ) flips one outcome.
+  const int n = 5;
+  const FlatTorus torus = flatTorus({1, 0}, {0.5, std::sqrt(3.0) / 2}, n);
+  for (double l : torus.tri.edgeLengths) REQUIRE(l == Approx(1.0 / n).epsilon(1e-14));  // equilateral
+  const double R0 = 1.0 / (n * std::sqrt(3.0)), delta = 5e-3;
+  for (double lambda : {0.0, 0.4}) {
+    for (int sign : {+1, -1}) {
+      INFO("lambda " << lambda << ", threshold R0 / (1 " << (sign > 0 ? "+" : "-") << " delta)");
+      RefineOptions o;
+      const double threshold = R0 / (1 + sign * delta);
+      o.epsilon = threshold * std::exp(lambda);
+      if (lambda != 0) o.lambda.assign(torus.tri.mesh.nVertices(), lambda);  // constant: its interpolant is exact
+      const RefineResult r = refineDelaunay(torus.tri, o);
+      const QualityReport q = measureQuality(r.triangulation);
+      if (sign > 0) {
+        CHECK(r.statistics.circumcenterInsertions > 0);
+        CHECK(q.maxCircumradius <= threshold * (1 + 1e-9));
+      } else {
+        CHECK(r.statistics.circumcenterInsertions + r.statistics.centroidInsertions + r.statistics.offCenterInsertions == 0);
+        CHECK(q.vertices == torus.tri.mesh.nVertices());
+        CHECK(q.maxCircumradius == Approx(R0).epsilon(1e-12));
+      }
+    }
+  }
+}
+
 TEST_CASE("grading by the conformal factor: every circumradius is below eps * exp(-lambda(circumcentre))") {
   const DiskSurface s = disk(3);
   // λ = 0.8·x is linear, so its piecewise-linear interpolant on the input is exact everywhere (also in boundary caps).
