@@ -239,7 +239,8 @@ void copyWithMarker(const std::string& from, const std::string& to, const std::s
 }
 }  // namespace
 
-TEST_CASE("view --three-dir --viewer-dir: the page is built from the given folders; a missing one is exit 1 naming it") {
+TEST_CASE(
+    "view --three-dir --viewer-dir: the page is built from the given folders; a missing one is exit 1 naming it") {
   REQUIRE(runConformesh("-q generate icosphere -o " + at("view.off")).status == 0);
   const std::string three = at("three"), viewer = at("viewer");
   copyWithMarker("/usr/share/javascript/three/three.min.js", three + "/three.min.js", "/* marker-three-min */");
@@ -396,7 +397,8 @@ TEST_CASE("remesh --smoothing-rule odt|centroid: different meshes, the bounds ke
     CHECK((*j)["quality"]["min_angle_deg"].get<double>() >= 20.7);
     // Moves are scored in the pulled-back metric e^(2λ)·background, so the original metric's mean smallest angle
     // rises: measured 56.27° -> 57.10°, held at +0.4°.
-    CHECK((*j)["quality"]["mean_min_angle_deg"].get<double>() >= none["quality"]["mean_min_angle_deg"].get<double>() + 0.4);
+    CHECK((*j)["quality"]["mean_min_angle_deg"].get<double>() >=
+          none["quality"]["mean_min_angle_deg"].get<double>() + 0.4);
   }
   CHECK(slurp(at("m_odt.ply")) != slurp(at("m_cen.ply")));
 }
@@ -405,8 +407,9 @@ TEST_CASE("convergence --smoothing-rule: every level smoothed by the rule asked,
   const std::string cmd = "convergence sphere --vertices 500,1000,2000 --t0-resolution 4 --no-plot";
   const auto none = smoothedRun(cmd, "none", "c_none");
   const auto odt = smoothedRun(cmd, "odt", "c_odt"), centroid = smoothedRun(cmd, "centroid", "c_cen");
-  // T0 (resolution 4) is refined at every level (452, 1282, 1730 vertices), so every level has free vertices to move. The original
-  // metric's mean smallest angle rises at each (measured +0.5° to +2.7°), and the two rules' meshes differ.
+  // T0 (resolution 4) is refined at every level (452, 1282, 1730 vertices), so every level has free vertices to move.
+  // The original metric's mean smallest angle rises at each (measured +0.5° to +2.7°), and the two rules' meshes
+  // differ.
   REQUIRE(odt["levels"].size() == 3);
   for (size_t i = 0; i < 3; ++i) {
     const auto& a = odt["levels"][i]["quality"];
@@ -446,7 +449,9 @@ TEST_CASE("remesh --region union: Theorem 3.4's unions of triangles, whose rim t
   CHECK(uni["region"] == "triangle-union");
   const std::vector<double> eb = vertexErrors(at("ball.ply")), eu = vertexErrors(at("union.ply"));
   REQUIRE(eb.size() == eu.size());  // the same mesh: the region changes the check only
-  const auto negative = [](const std::vector<double>& e) { return std::count_if(e.begin(), e.end(), [](double x) { return x < 0; }); };
+  const auto negative = [](const std::vector<double>& e) {
+    return std::count_if(e.begin(), e.end(), [](double x) { return x < 0; });
+  };
   const double n = static_cast<double>(eb.size());
   CHECK(negative(eb) > 0.3 * n);  // both signs, about half each (measured 48 % negative)
   CHECK(negative(eb) < 0.7 * n);
@@ -509,7 +514,8 @@ TEST_CASE("generate horizon-series --lmax: the fit's degree, and the spheroid's 
       top = std::max(top, l);
       pole += v * y;
       // P_l(0) = (−1)^(l/2) l! / (2^l ((l/2)!)²) for even l.
-      equator += v * y * std::pow(-1, l / 2) * std::tgamma(l + 1) / (std::pow(2, l) * std::pow(std::tgamma(l / 2 + 1), 2));
+      equator +=
+          v * y * std::pow(-1, l / 2) * std::tgamma(l + 1) / (std::pow(2, l) * std::pow(std::tgamma(l / 2 + 1), 2));
     }
     CHECK(top == lmax);
     const double a = j["params"]["a"], rp = 1 + std::sqrt(1 - a * a);

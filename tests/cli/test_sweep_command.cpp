@@ -291,7 +291,10 @@ namespace {
 json shardSpec() {
   return {{"studies",
            {{{"input", "sphere"}, {"eps", {0.1, 0.07, 0.05}}, {"options", {{"t0-resolution", 4}}}},
-            {{"input", "ellipsoid"}, {"params", {{"f", {0.3}}}}, {"eps", {0.1, 0.07}}, {"options", {{"t0-resolution", 4}}}}}}};
+            {{"input", "ellipsoid"},
+             {"params", {{"f", {0.3}}}},
+             {"eps", {0.1, 0.07}},
+             {"options", {{"t0-resolution", 4}}}}}}};
 }
 // The ids of the cases a run in DIR computed: those whose attempt log has a START line (each at most one).
 std::set<std::string> computedIds(const fs::path& dir) {
@@ -332,8 +335,8 @@ TEST_CASE("sweep --shard K/N: disjoint shards whose union is the sweep; --table-
   for (const auto& id : first) second.erase(id);
   std::set<std::string> even, odd;
   for (size_t i = 0; i < all.size(); ++i) (i % 2 ? odd : even).insert(all[i]["id"].get<std::string>());
-  CHECK(first == even);   // 3 cases
-  CHECK(second == odd);   // 2 cases: disjoint from the first, and together every case exactly once
+  CHECK(first == even);  // 3 cases
+  CHECK(second == odd);  // 2 cases: disjoint from the first, and together every case exactly once
   // Each record is the unsharded run's, number for number; the last job's table is the whole table.
   const json sharded = readJson(shared / "table.json");
   REQUIRE(sharded.size() == all.size());
@@ -347,12 +350,13 @@ TEST_CASE("sweep --shard K/N: disjoint shards whose union is the sweep; --table-
   const json rt = readJson(shared / "table.json");
   REQUIRE(rt.size() == all.size());
   for (size_t i = 0; i < all.size(); ++i) CHECK(strip(rt[i]) == strip(all[i]));
-  const std::string csv = slurp(shared / "table.csv");  // (its seconds columns differ from the whole run's)
+  const std::string csv = slurp(shared / "table.csv");   // (its seconds columns differ from the whole run's)
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 6);  // a header and the 5 cases
   for (const json& rec : all) CHECK(attempts(shared, rec["id"].get<std::string>()) == 1);
   CHECK(progressLines(rebuilt.err).empty());  // nothing ran
   // On a folder with no records it computes nothing either: every case is listed as missing.
-  const auto empty = runConformesh("-q sweep " + spec + " -o " + (dir / "empty").string() + " --table-only --no-plot --json");
+  const auto empty =
+      runConformesh("-q sweep " + spec + " -o " + (dir / "empty").string() + " --table-only --no-plot --json");
   CHECK(json::parse(empty.out)["missing"] == 5);
   CHECK(computedIds(dir / "empty").empty());
 }
@@ -383,7 +387,8 @@ TEST_CASE("sweep --progress-interval: 0 prints a line at every poll of a running
   const fs::path dir = conformesh::testing::scratchDir() / "progress";
   fs::create_directories(dir);
   const std::string spec = writeSpec(dir, "spec.json", shardSpec()).string();
-  const auto often = runConformesh("sweep " + spec + " -o " + (dir / "a").string() + " --no-plot --progress-interval 0");
+  const auto often =
+      runConformesh("sweep " + spec + " -o " + (dir / "a").string() + " --no-plot --progress-interval 0");
   const auto rarely =
       runConformesh("sweep " + spec + " -o " + (dir / "b").string() + " --no-plot --progress-interval 1e6");
   REQUIRE(often.status == 0);
@@ -392,7 +397,8 @@ TEST_CASE("sweep --progress-interval: 0 prints a line at every poll of a running
   INFO(often.err);
   // At least one line while each case ran (each sends several stage messages), and the final one.
   CHECK(a.size() >= 6);
-  CHECK(std::count_if(a.begin(), a.end(), [](const std::string& l) { return l.find(" 1 running") != std::string::npos; }) >= 5);
+  CHECK(std::count_if(a.begin(), a.end(),
+                      [](const std::string& l) { return l.find(" 1 running") != std::string::npos; }) >= 5);
   REQUIRE(b.size() == 1);
   CHECK(b[0].find("5/5 done (5 ok, 0 failed, 0 timeout), 0 running") != std::string::npos);
 }

@@ -281,7 +281,8 @@ TEST_CASE("mean circumradius scales like 1/sqrt(V) over a sweep of epsilon (pape
   CHECK(slope == Approx(-0.5).margin(0.03));
 }
 
-TEST_CASE("the size test's threshold is eps * exp(-lambda(c)) itself: inputs 0.5 % above it refine, 0.5 % below do not") {
+TEST_CASE(
+    "the size test's threshold is eps * exp(-lambda(c)) itself: inputs 0.5 % above it refine, 0.5 % below do not") {
   // The bound R ≤ ε·e^(−λ) cannot catch a size test that is too strict, and catches a too lax one only where the
   // output's largest circumradius sits within the error of ε (in the remesh pipeline it sits at 0.88ε), so the
   // threshold itself is pinned: the hexagonal flat torus is tiled by equilateral triangles of side s = 1/n, all of

@@ -101,7 +101,8 @@ TEST_CASE("remesh: the conformal factor grades the mesh so that circumradii are 
   CHECK(r.quality.meanCircumradius > 0.5 * eps);
 }
 
-TEST_CASE("remesh: the size threshold is eps itself — a flat torus of equilateral T0 refines at R0/1.005, not at R0/0.995") {
+TEST_CASE(
+    "remesh: the size threshold is eps itself — a flat torus of equilateral T0 refines at R0/1.005, not at R0/0.995") {
   // The bounds above hold with room (the Kerr sphere's largest circumradius is 0.88 ε), so a size test that is 1 %
   // too lax passes them. Pinned here: the hexagonal flat torus (τ = e^(iπ/3)) has K ≡ 0, its T0 is a lattice of
   // equilateral triangles of side 1/n in the original metric (circumradius R₀ = 1/(n√3)), the flow's λ is constant
@@ -152,14 +153,14 @@ TEST_CASE("remesh: a Bezier patch with corners keeps its boundary and meets the 
                      << r.quality.maxCircumradius / eps);
   CHECK(r.uniformQuality.maxCircumradius <= eps * std::exp(-lambdaMin) * (1 + 1e-9));
   // In the original metric the bound is CALIBRATED, not derived. The Kerr case's error model (λ's variation over a
-  // triangle, arcs against chords) predicts ε·(1 + max Δλ) = ε·(1 + 4.7e-3) here (the largest spread of λ over an output
-  // triangle's corners is 4.7e-3), but the largest circumradius, 1.0269 ε, sits on a triangle at the boundary where λ
-  // spreads by 1.6e-3 only: the excess comes from the pull-back's correspondence, which maps each T0* face affinely
-  // onto its chart triangle, so that the Bézier metric's variation over one coarse T0 face (T0 of 209 vertices for
-  // 7727 output ones, ~18 per T0 face; along the sides, the variation of the speed √g over a T0 boundary edge) distorts the lengths of the small
-  // T1 triangles inside it. That term has no closed form for the teapot's metric; it is held at the measurement + 0.3 %
-  // (the former 5 % let a 1 % length-scale error of the output through: 1.037 ε; a size test 1 % too lax shows in R*
-  // above, not here: the largest R stays at 1.027 ε).
+  // triangle, arcs against chords) predicts ε·(1 + max Δλ) = ε·(1 + 4.7e-3) here (the largest spread of λ over an
+  // output triangle's corners is 4.7e-3), but the largest circumradius, 1.0269 ε, sits on a triangle at the boundary
+  // where λ spreads by 1.6e-3 only: the excess comes from the pull-back's correspondence, which maps each T0* face
+  // affinely onto its chart triangle, so that the Bézier metric's variation over one coarse T0 face (T0 of 209 vertices
+  // for 7727 output ones, ~18 per T0 face; along the sides, the variation of the speed √g over a T0 boundary edge)
+  // distorts the lengths of the small T1 triangles inside it. That term has no closed form for the teapot's metric; it
+  // is held at the measurement + 0.3 % (the former 5 % let a 1 % length-scale error of the output through: 1.037 ε; a
+  // size test 1 % too lax shows in R* above, not here: the largest R stays at 1.027 ε).
   constexpr double kTeapotMaxCircumradiusCalibratedMeasured1027 = 1.03;
   CHECK(r.quality.maxCircumradius <= kTeapotMaxCircumradiusCalibratedMeasured1027 * eps);
   // Chords against arcs: the area is the smooth area up to O(ε²) = 4e-4 relative.
