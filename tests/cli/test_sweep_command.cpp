@@ -2,7 +2,9 @@
 // family parameter, a malformed mesh file, a case over --case-timeout), a bad spec rejected with exit 2 naming the
 // file, study and key, resumption without recomputing a finished case (counted in the attempt logs), the MPI table
 // equal to the serial table number for number, and a run killed with SIGKILL midway then rerun, ending with the
-// uninterrupted run's table, no truncated or temporary file, and no finished case computed twice.
+// uninterrupted run's table, no truncated or temporary file, and no finished case computed twice; --shard (disjoint
+// shards whose union is the sweep), --table-only (the table from the records, nothing computed), --threads (bit for
+// bit the one-thread outputs) and --progress-interval (how often progress lines come).
 #include <catch2/catch.hpp>
 
 #include "support/cli_runner.h"
@@ -10,12 +12,15 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -280,3 +285,120 @@ TEST_CASE("sweep: killed with SIGKILL midway under MPI, then rerun, ends with th
   }
 }
 #endif
+
+namespace {
+// 5 cases of a few thousand vertices each (well under a second): the sphere at three eps, an ellipsoid at two.
+json shardSpec() {
+  return {{"studies",
+           {{{"input", "sphere"}, {"eps", {0.1, 0.07, 0.05}}, {"options", {{"t0-resolution", 4}}}},
+            {{"input", "ellipsoid"},
+             {"params", {{"f", {0.3}}}},
+             {"eps", {0.1, 0.07}},
+             {"options", {{"t0-resolution", 4}}}}}}};
+}
+// The ids of the cases a run in DIR computed: those whose attempt log has a START line (each at most one).
+std::set<std::string> computedIds(const fs::path& dir) {
+  std::set<std::string> ids;
+  if (!fs::exists(dir / "cases")) return ids;
+  for (const auto& e : fs::directory_iterator(dir / "cases")) {
+    const int n = attempts(dir, e.path().filename().string());
+    REQUIRE(n <= 1);  // no case computed twice
+    if (n == 1) ids.insert(e.path().filename().string());
+  }
+  return ids;
+}
+// Progress lines ("sweep: K/N done ...") on stderr.
+std::vector<std::string> progressLines(const std::string& err) {
+  std::vector<std::string> out;
+  std::istringstream in(err);
+  for (std::string line; std::getline(in, line);)
+    if (line.find("conformesh: sweep: ") == 0 && line.find(" done (") != std::string::npos) out.push_back(line);
+  return out;
+}
+}  // namespace
+
+TEST_CASE("sweep --shard K/N: disjoint shards whose union is the sweep; --table-only computes nothing") {
+  const fs::path dir = conformesh::testing::scratchDir() / "shards";
+  fs::create_directories(dir);
+  const std::string spec = writeSpec(dir, "spec.json", shardSpec()).string();
+  const auto whole = runConformesh("-q sweep " + spec + " -o " + (dir / "whole").string() + " --no-plot");
+  INFO(whole.err);
+  REQUIRE(whole.status == 0);
+  const json all = readJson(dir / "whole" / "table.json");
+  REQUIRE(all.size() == 5);
+  // Two jobs sharing one DIR, one after the other: shard 0/2 runs the cases of even index in spec order, 1/2 the odd.
+  const fs::path shared = dir / "shared";
+  REQUIRE(runConformesh("-q sweep " + spec + " -o " + shared.string() + " --shard 0/2 --no-plot").status == 0);
+  const std::set<std::string> first = computedIds(shared);
+  REQUIRE(runConformesh("-q sweep " + spec + " -o " + shared.string() + " --shard 1/2 --no-plot").status == 0);
+  std::set<std::string> second = computedIds(shared);
+  for (const auto& id : first) second.erase(id);
+  std::set<std::string> even, odd;
+  for (size_t i = 0; i < all.size(); ++i) (i % 2 ? odd : even).insert(all[i]["id"].get<std::string>());
+  CHECK(first == even);  // 3 cases
+  CHECK(second == odd);  // 2 cases: disjoint from the first, and together every case exactly once
+  // Each record is the unsharded run's, number for number; the last job's table is the whole table.
+  const json sharded = readJson(shared / "table.json");
+  REQUIRE(sharded.size() == all.size());
+  for (size_t i = 0; i < all.size(); ++i) CHECK(strip(sharded[i]) == strip(all[i]));
+  // --table-only rebuilds the table from the records alone: remove it, rebuild, compare; no case is started again.
+  fs::remove(shared / "table.json");
+  fs::remove(shared / "table.csv");
+  const auto rebuilt = runConformesh("sweep " + spec + " -o " + shared.string() + " --table-only --no-plot --json");
+  INFO(rebuilt.err);
+  REQUIRE(rebuilt.status == 0);
+  const json rt = readJson(shared / "table.json");
+  REQUIRE(rt.size() == all.size());
+  for (size_t i = 0; i < all.size(); ++i) CHECK(strip(rt[i]) == strip(all[i]));
+  const std::string csv = slurp(shared / "table.csv");   // (its seconds columns differ from the whole run's)
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 6);  // a header and the 5 cases
+  for (const json& rec : all) CHECK(attempts(shared, rec["id"].get<std::string>()) == 1);
+  CHECK(progressLines(rebuilt.err).empty());  // nothing ran
+  // On a folder with no records it computes nothing either: every case is listed as missing.
+  const auto empty =
+      runConformesh("-q sweep " + spec + " -o " + (dir / "empty").string() + " --table-only --no-plot --json");
+  CHECK(json::parse(empty.out)["missing"] == 5);
+  CHECK(computedIds(dir / "empty").empty());
+}
+
+TEST_CASE("sweep --threads: 2 OpenMP threads per case give the 1-thread records and meshes bit for bit") {
+  // The only parallel loop of a case measures each output edge's length independently (metric_remesh.cpp), so the
+  // thread count must not change one bit of any output.
+  const fs::path dir = conformesh::testing::scratchDir() / "threads";
+  fs::create_directories(dir);
+  const std::string spec = writeSpec(dir, "spec.json", shardSpec()).string();
+  for (const char* n : {"1", "2"})
+    REQUIRE(runConformesh("-q sweep " + spec + " -o " + (dir / n).string() + " --threads " + n + " --no-plot").status ==
+            0);
+  const json one = readJson(dir / "1" / "table.json"), two = readJson(dir / "2" / "table.json");
+  REQUIRE(one.size() == 5);
+  REQUIRE(two.size() == 5);
+  for (size_t i = 0; i < one.size(); ++i) {
+    const std::string id = one[i]["id"];
+    INFO(id);
+    CHECK(strip(two[i]) == strip(one[i]));
+    CHECK(slurp(dir / "2" / "cases" / id / "mesh.ply") == slurp(dir / "1" / "cases" / id / "mesh.ply"));
+  }
+}
+
+TEST_CASE("sweep --progress-interval: 0 prints a line at every poll of a running case, a long one only the last") {
+  // The serial sweep polls each running case every 0.1 s or on each stage message from it, and prints a progress line
+  // when --progress-interval seconds have passed since the last one, plus a final line when all are done.
+  const fs::path dir = conformesh::testing::scratchDir() / "progress";
+  fs::create_directories(dir);
+  const std::string spec = writeSpec(dir, "spec.json", shardSpec()).string();
+  const auto often =
+      runConformesh("sweep " + spec + " -o " + (dir / "a").string() + " --no-plot --progress-interval 0");
+  const auto rarely =
+      runConformesh("sweep " + spec + " -o " + (dir / "b").string() + " --no-plot --progress-interval 1e6");
+  REQUIRE(often.status == 0);
+  REQUIRE(rarely.status == 0);
+  const auto a = progressLines(often.err), b = progressLines(rarely.err);
+  INFO(often.err);
+  // At least one line while each case ran (each sends several stage messages), and the final one.
+  CHECK(a.size() >= 6);
+  CHECK(std::count_if(a.begin(), a.end(),
+                      [](const std::string& l) { return l.find(" 1 running") != std::string::npos; }) >= 5);
+  REQUIRE(b.size() == 1);
+  CHECK(b[0].find("5/5 done (5 ok, 0 failed, 0 timeout), 0 running") != std::string::npos);
+}

@@ -281,6 +281,54 @@ TEST_CASE("mean circumradius scales like 1/sqrt(V) over a sweep of epsilon (pape
   CHECK(slope == Approx(-0.5).margin(0.03));
 }
 
+TEST_CASE(
+    "the size test's threshold is eps * exp(-lambda(c)) itself: inputs 0.5 % above it refine, 0.5 % below do not") {
+  // The bound R ≤ ε·e^(−λ) cannot catch a size test that is too strict, and catches a too lax one only where the
+  // output's largest circumradius sits within the error of ε (in the remesh pipeline it sits at 0.88ε), so the
+  // threshold itself is pinned: the hexagonal flat torus is tiled by equilateral triangles of side s = 1/n, all of
+  // circumradius R₀ = s/√3 and ratio R/ℓ = 1/√3 < B (shape-good, strictly Delaunay). The refinement inserts a point iff
+  // some face has R > ε·e^(−λ(c)), λ(c) the input's piecewise-linear λ at the circumcentre c — the centroid of an
+  // equilateral face, so λ(c) is the mean of its corners' λ. With ε·e^(−λ(c)) = R₀/(1 + δ) at every face, every face
+  // is too large and all output circumradii must fall below it; with R₀/(1 − δ) at the faces of least threshold, none
+  // is and the output is the input. δ = 0.5 %: a threshold off by 1 % in either direction flips one outcome.
+  // Three gradings: λ ≡ 0; λ ≡ 0.4; λ = 0.4 with a bump β = 0.03 at vertex 0, whose six faces have λ(c) = 0.4 + β/3.
+  // The bump puts the quick pre-test (R > ε·e^(−max λ), which admits every face here) below the faces' own thresholds,
+  // so that only the per-face test at λ(c) decides — a test too strict by 1 % there refines the bump's faces.
+  const int n = 5;
+  const FlatTorus torus = flatTorus({1, 0}, {0.5, std::sqrt(3.0) / 2}, n);
+  for (double l : torus.tri.edgeLengths) REQUIRE(l == Approx(1.0 / n).epsilon(1e-14));  // equilateral
+  const double R0 = 1.0 / (n * std::sqrt(3.0)), delta = 5e-3;
+  struct Grading {
+    double lambda, bump;
+  };
+  for (const Grading g : {Grading{0, 0}, Grading{0.4, 0}, Grading{0.4, 0.03}}) {
+    for (int sign : {+1, -1}) {
+      INFO("lambda " << g.lambda << " bump " << g.bump << ", threshold R0 / (1 " << (sign > 0 ? "+" : "-")
+                     << " delta)");
+      RefineOptions o;
+      // The least threshold, at the bump's faces: ε·e^(−λ − β/3); the others' is e^(β/3) larger.
+      const double least = sign > 0 ? R0 / (1 + delta) * std::exp(-g.bump / 3) : R0 / (1 - delta);
+      o.epsilon = least * std::exp(g.lambda + g.bump / 3);
+      if (g.lambda != 0) {
+        o.lambda.assign(torus.tri.mesh.nVertices(), g.lambda);
+        o.lambda[0] += g.bump;
+      }
+      const RefineResult r = refineDelaunay(torus.tri, o);
+      const QualityReport q = measureQuality(r.triangulation);
+      if (sign > 0) {
+        CHECK(r.statistics.circumcenterInsertions > 0);
+        CHECK(q.maxCircumradius <= o.epsilon * std::exp(-g.lambda - g.bump) * (1 + 1e-9));  // below the least bound
+      } else {
+        CHECK(r.statistics.circumcenterInsertions + r.statistics.centroidInsertions +
+                  r.statistics.offCenterInsertions ==
+              0);
+        CHECK(q.vertices == torus.tri.mesh.nVertices());
+        CHECK(q.maxCircumradius == Approx(R0).epsilon(1e-12));
+      }
+    }
+  }
+}
+
 TEST_CASE("grading by the conformal factor: every circumradius is below eps * exp(-lambda(circumcentre))") {
   const DiskSurface s = disk(3);
   // λ = 0.8·x is linear, so its piecewise-linear interpolant on the input is exact everywhere (also in boundary caps).
