@@ -23,21 +23,6 @@ std::string lower(std::string s) {
   return s;
 }
 
-std::vector<std::string> linkNames(hid_t group) {
-  std::vector<std::string> names;
-  H5G_info_t info;
-  if (H5Gget_info(group, &info) < 0) return names;
-  for (hsize_t i = 0; i < info.nlinks; ++i) {
-    const ssize_t len = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-    if (len <= 0) continue;
-    std::string s(static_cast<size_t>(len) + 1, '\0');
-    H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, s.data(), s.size(), H5P_DEFAULT);
-    s.resize(static_cast<size_t>(len));
-    names.push_back(s);
-  }
-  return names;
-}
-
 // The six dataset names of the group: the ADMBase or SpECTRE names when one of them is present (then all six must
 // be), else CarpetIOHDF5's "ADMBASE::gxx it=… tl=… rl=… c=…" (exactly one per component).
 std::array<std::string, 6> componentDatasets(hid_t group, const std::string& where) {
@@ -53,7 +38,7 @@ std::array<std::string, 6> componentDatasets(hid_t group, const std::string& whe
     return names;
   }
   const auto& adm = spatialMetricComponentNames("admbase");
-  const std::vector<std::string> links = linkNames(group);
+  const std::vector<std::string> links = hdf5_detail::linkNames(group);
   std::array<std::string, 6> found;
   for (int c = 0; c < 6; ++c) {
     const std::string prefix = "admbase::" + adm[c];

@@ -442,21 +442,6 @@ HorizonShapeRecord readHorizonShape(const std::string& pathAndGroup) {
 
 namespace {
 
-std::vector<std::string> linkNames(hid_t group) {
-  std::vector<std::string> names;
-  H5G_info_t info;
-  if (H5Gget_info(group, &info) < 0) return names;
-  for (hsize_t i = 0; i < info.nlinks; ++i) {
-    const ssize_t len = H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-    if (len <= 0) continue;
-    std::string s(static_cast<size_t>(len) + 1, '\0');
-    H5Lget_name_by_idx(group, ".", H5_INDEX_NAME, H5_ITER_INC, i, s.data(), s.size(), H5P_DEFAULT);
-    s.resize(static_cast<size_t>(len));
-    names.push_back(s);
-  }
-  return names;
-}
-
 bool marksShape(hid_t group) {
   for (const char* link : {"coefficients", "radius", "center"})
     if (H5Lexists(group, link, H5P_DEFAULT) > 0) return true;
@@ -466,7 +451,7 @@ bool marksShape(hid_t group) {
 void collectShapeGroups(hid_t group, const std::string& prefix, int depth, std::vector<std::string>& out) {
   if (marksShape(group)) out.push_back(prefix.empty() ? "/" : prefix);
   if (depth > 8) return;
-  for (const std::string& name : linkNames(group)) {
+  for (const std::string& name : hdf5_detail::linkNames(group)) {
     if (H5Lexists(group, name.c_str(), H5P_DEFAULT) <= 0) continue;
     Id g(H5Gopen2(group, name.c_str(), H5P_DEFAULT), H5Gclose);  // fails quietly for datasets
     if (g.valid()) collectShapeGroups(g.get(), prefix + "/" + name, depth + 1, out);
