@@ -377,21 +377,39 @@ HorizonShapeRecord readHorizonShapeHdf5(const std::string& pathAndGroup) {
   return rec;
 }
 
-HorizonShapeRecord readHorizonShapeJson(const std::string& path) {
+namespace {
+
+// A JSON shape file read once: its text (parseStrahlkorperJson takes text) and its parse.
+struct JsonShapeFile {
+  std::string text;
+  nlohmann::json value;
+};
+
+JsonShapeFile readJsonShapeFile(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the horizon shape file");
   std::ostringstream ss;
   ss << in.rdbuf();
-  nlohmann::json j;
+  JsonShapeFile f{ss.str(), {}};
   try {
-    j = nlohmann::json::parse(ss.str());
+    f.value = nlohmann::json::parse(f.text);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(path + ": not valid JSON: " + e.what());
   }
+  return f;
+}
+
+HorizonFileMetadata metadataFromJson(const nlohmann::json& j, const std::string& shapePath);
+
+}  // namespace
+
+HorizonShapeRecord readHorizonShapeJson(const std::string& path) {
+  const JsonShapeFile file = readJsonShapeFile(path);
+  const nlohmann::json& j = file.value;
   HorizonShapeRecord rec;
   if (!j.is_object() || !j.contains("radius")) {
-    rec.shape = parseStrahlkorperJson(ss.str(), path);
-    rec.meta = readHorizonMetadata(path);
+    rec.shape = parseStrahlkorperJson(file.text, path);
+    rec.meta = metadataFromJson(j, path);
     return rec;
   }
   if (j.contains("coefficients")) throw InputError(path + ": both keys 'coefficients' and 'radius'; give one");
@@ -432,7 +450,7 @@ HorizonShapeRecord readHorizonShapeJson(const std::string& path) {
   rec.sampled = true;
   rec.fit = fitSampledRadius(s, lMax, path);
   rec.shape = rec.fit.shape;
-  rec.meta = readHorizonMetadata(path);
+  rec.meta = metadataFromJson(j, path);
   return rec;
 }
 
@@ -575,16 +593,13 @@ std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetric(const std::string& shape
 
 HorizonFileMetadata readHorizonMetadata(const std::string& shapePath) {
   if (isHdf5ShapePath(shapePath)) return readHorizonShapeHdf5(shapePath).meta;
-  std::ifstream in(shapePath);
-  if (!in) throw InputError(shapePath + ": cannot open the horizon shape file");
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
-    failAt(shapePath, std::string("not valid JSON: ") + e.what());
-  }
+  return metadataFromJson(readJsonShapeFile(shapePath).value, shapePath);
+}
+
+namespace {
+
+// The keys beside the shape: spatial_metric (a relative file name resolved against the shape's folder), params, time.
+HorizonFileMetadata metadataFromJson(const nlohmann::json& j, const std::string& shapePath) {
   HorizonFileMetadata m;
   if (!j.is_object()) failAt(shapePath, "expected a JSON object with keys center and coefficients");
   if (j.contains("spatial_metric")) {
@@ -611,6 +626,8 @@ HorizonFileMetadata readHorizonMetadata(const std::string& shapePath) {
   }
   return m;
 }
+
+}  // namespace
 
 std::unique_ptr<HorizonSurfaceMetric> makeHorizonMetricFromFile(const std::string& shapePath) {
   const HorizonFileMetadata m = readHorizonMetadata(shapePath);
