@@ -15,7 +15,7 @@ namespace conformesh::embedding {
 
 namespace {
 
-std::string sci(double x) {
+std::string sci3(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3e", x);
   return buf;
@@ -64,7 +64,7 @@ ProjectedPoint projectWithScale(const EmbeddedSurface& s, const Eigen::Vector3d&
     }
   }
   throw ConvergenceError("closest-point projection of " + point(q) + " did not converge in " +
-                         std::to_string(r.iterations) + " Gauss–Newton steps (last step " + sci(lastStep) +
+                         std::to_string(r.iterations) + " Gauss–Newton steps (last step " + sci3(lastStep) +
                          "); the start " + point(start) + " is probably outside the projection's basin");
 }
 

@@ -20,7 +20,7 @@ namespace conformesh::intrinsic {
 namespace {
 
 // "name: expected <expected>, found <value>" in the manner of Ceres' IsValid.
-std::string expected(const char* name, const char* what, double found) {
+std::string ricciFlowExpected(const char* name, const char* what, double found) {
   std::ostringstream msg;
   msg.precision(17);
   msg << "RicciFlowOptions::" << name << ": expected " << what << ", found " << found;
@@ -30,16 +30,16 @@ std::string expected(const char* name, const char* what, double found) {
 }  // namespace
 
 std::string RicciFlowOptions::validate() const {
-  if (!(tolerance >= 0) || !std::isfinite(tolerance)) return expected("tolerance", "a finite value >= 0", tolerance);
+  if (!(tolerance >= 0) || !std::isfinite(tolerance)) return ricciFlowExpected("tolerance", "a finite value >= 0", tolerance);
   if (!(relativeFloor >= 0) || !std::isfinite(relativeFloor))
-    return expected("relativeFloor", "a finite value >= 0", relativeFloor);
-  if (maxNewtonSteps < 0) return expected("maxNewtonSteps", ">= 0", maxNewtonSteps);
-  if (maxReuseIterations < 0) return expected("maxReuseIterations", ">= 0", maxReuseIterations);
-  if (nestedDissectionMin < 0) return expected("nestedDissectionMin", ">= 0", nestedDissectionMin);
-  if (!(armijo > 0 && armijo < 0.5)) return expected("armijo", "0 < armijo < 0.5", armijo);
-  if (!(minStep > 0 && minStep <= 1)) return expected("minStep", "0 < minStep <= 1", minStep);
+    return ricciFlowExpected("relativeFloor", "a finite value >= 0", relativeFloor);
+  if (maxNewtonSteps < 0) return ricciFlowExpected("maxNewtonSteps", ">= 0", maxNewtonSteps);
+  if (maxReuseIterations < 0) return ricciFlowExpected("maxReuseIterations", ">= 0", maxReuseIterations);
+  if (nestedDissectionMin < 0) return ricciFlowExpected("nestedDissectionMin", ">= 0", nestedDissectionMin);
+  if (!(armijo > 0 && armijo < 0.5)) return ricciFlowExpected("armijo", "0 < armijo < 0.5", armijo);
+  if (!(minStep > 0 && minStep <= 1)) return ricciFlowExpected("minStep", "0 < minStep <= 1", minStep);
   if (!(delaunayTolerance >= 0) || !std::isfinite(delaunayTolerance))
-    return expected("delaunayTolerance", "a finite value >= 0", delaunayTolerance);
+    return ricciFlowExpected("delaunayTolerance", "a finite value >= 0", delaunayTolerance);
   return "";
 }
 

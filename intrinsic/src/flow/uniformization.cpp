@@ -42,7 +42,7 @@ std::string toString(UniformizationTarget target) {
 namespace {
 
 // "UniformizationOptions::<name>: expected <what>, found <value>" in the manner of Ceres' IsValid.
-std::string expected(const char* name, const char* what, double found) {
+std::string uniformizationExpected(const char* name, const char* what, double found) {
   std::ostringstream msg;
   msg.precision(17);
   msg << "UniformizationOptions::" << name << ": expected " << what << ", found " << found;
@@ -52,11 +52,11 @@ std::string expected(const char* name, const char* what, double found) {
 }  // namespace
 
 std::string UniformizationOptions::validate() const {
-  if (maxPunctureAttempts < 1) return expected("maxPunctureAttempts", ">= 1", maxPunctureAttempts);
+  if (maxPunctureAttempts < 1) return uniformizationExpected("maxPunctureAttempts", ">= 1", maxPunctureAttempts);
   if (!(earlyReflexFactor >= 0) || !std::isfinite(earlyReflexFactor))
-    return expected("earlyReflexFactor", "a finite value >= 0 (0: off)", earlyReflexFactor);
+    return uniformizationExpected("earlyReflexFactor", "a finite value >= 0 (0: off)", earlyReflexFactor);
   if (!(centringTolerance >= 0) || !std::isfinite(centringTolerance))
-    return expected("centringTolerance", "a finite value >= 0", centringTolerance);
+    return uniformizationExpected("centringTolerance", "a finite value >= 0", centringTolerance);
   return flow.validate();  // the flow options every target's solve uses
 }
 

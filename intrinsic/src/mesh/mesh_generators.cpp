@@ -30,7 +30,7 @@ constexpr long long kMaxFaces = std::numeric_limits<int>::max() / 3;
 
 // The shortest decimal (at least 6 significant digits, as iostreams print) that reads back as x: 0.4, not
 // 0.40000000000000002.
-std::string fmt(double x) {
+std::string shortestDecimal(double x) {
   for (int digits = 6;; ++digits) {
     std::ostringstream s;
     s.precision(digits);
@@ -39,12 +39,12 @@ std::string fmt(double x) {
   }
 }
 
-void require(bool ok, const std::string& generator, const std::string& what) {
+void requireGenerator(bool ok, const std::string& generator, const std::string& what) {
   if (!ok) throw InputError(generator + ": " + what);
 }
 
 void requireFaceCount(long long faces, const std::string& generator) {
-  require(faces <= kMaxFaces, generator,
+  requireGenerator(faces <= kMaxFaces, generator,
           "would have " + std::to_string(faces) + " faces; at most " + std::to_string(kMaxFaces) + " are supported");
 }
 
@@ -60,9 +60,9 @@ bool finitePositive(double x) {
 
 MeshData makeIcosphere(const IcosphereOptions& options) {
   const std::string name = "icosphere";
-  require(options.level >= 0 && options.level <= 12, name,
+  requireGenerator(options.level >= 0 && options.level <= 12, name,
           "level must be in 0..12 (20·4^L faces), found " + std::to_string(options.level));
-  require(finitePositive(options.radius), name, "radius must be finite and positive, found " + fmt(options.radius));
+  requireGenerator(finitePositive(options.radius), name, "radius must be finite and positive, found " + shortestDecimal(options.radius));
   requireFaceCount(20LL << (2 * options.level), name);
 
   // The icosahedron (0, ±1, ±φ) and its cyclic permutations; faces listed counter-clockwise seen from outside.
@@ -135,7 +135,7 @@ MeshData makeIcosphere(const IcosphereOptions& options) {
   }
 
   MeshData data;
-  data.source = "icosphere(level=" + std::to_string(options.level) + ", radius=" + fmt(options.radius) + ")";
+  data.source = "icosphere(level=" + std::to_string(options.level) + ", radius=" + shortestDecimal(options.radius) + ")";
   data.nVertices = static_cast<int>(pos.size());
   data.faces = std::move(faces);
   data.positions = std::move(pos);
@@ -149,19 +149,19 @@ MeshData makeIcosphere(const IcosphereOptions& options) {
 MeshData makeTorus(const TorusOptions& options) {
   const std::string name = "torus";
   const double R = options.majorRadius, r = options.minorRadius;
-  require(finitePositive(r) && std::isfinite(R) && r < R, name,
-          "radii must satisfy 0 < r < R (else the torus self-intersects), found R=" + fmt(R) + ", r=" + fmt(r));
-  require(options.n >= 3 && options.m >= 3, name,
+  requireGenerator(finitePositive(r) && std::isfinite(R) && r < R, name,
+          "radii must satisfy 0 < r < R (else the torus self-intersects), found R=" + shortestDecimal(R) + ", r=" + shortestDecimal(r));
+  requireGenerator(options.n >= 3 && options.m >= 3, name,
           "n and m must be at least 3 (else two vertices are joined by two edges), found n=" +
               std::to_string(options.n) + ", m=" + std::to_string(options.m));
-  require(!options.alternateDiagonals || (options.n % 2 == 0 && options.m % 2 == 0), name,
+  requireGenerator(!options.alternateDiagonals || (options.n % 2 == 0 && options.m % 2 == 0), name,
           "alternating diagonals need even n and m so the checkerboard closes up, found n=" +
               std::to_string(options.n) + ", m=" + std::to_string(options.m));
   const int n = options.n, m = options.m;
   requireFaceCount(2LL * n * m, name);
 
   MeshData data;
-  data.source = "torus(R=" + fmt(R) + ", r=" + fmt(r) + ", n=" + std::to_string(n) + ", m=" + std::to_string(m) + ")";
+  data.source = "torus(R=" + shortestDecimal(R) + ", r=" + shortestDecimal(r) + ", n=" + std::to_string(n) + ", m=" + std::to_string(m) + ")";
   data.nVertices = n * m;
   data.positions.resize(static_cast<std::size_t>(n) * m);
   for (int i = 0; i < n; ++i) {
@@ -197,10 +197,10 @@ MeshData makeTorus(const TorusOptions& options) {
 MeshData makeGenusSurface(const GenusSurfaceOptions& options) {
   const std::string name = "genus surface";
   const int g = options.genus, N = options.resolution;
-  require(g >= 0 && g <= 100000, name, "genus must be in 0..100000, found " + std::to_string(g));
-  require(N >= 1 && N <= 100000, name, "resolution must be in 1..100000, found " + std::to_string(N));
-  require(finitePositive(options.cellSize), name,
-          "cell size must be finite and positive, found " + fmt(options.cellSize));
+  requireGenerator(g >= 0 && g <= 100000, name, "genus must be in 0..100000, found " + std::to_string(g));
+  requireGenerator(N >= 1 && N <= 100000, name, "resolution must be in 1..100000, found " + std::to_string(N));
+  requireGenerator(finitePositive(options.cellSize), name,
+          "cell size must be finite and positive, found " + shortestDecimal(options.cellSize));
   const long long W = 2LL * g + 1;
   const long long P = 2 * (W + 3) * N + 4LL * g * N;
   requireFaceCount(4 * (3 * W - g) * N * N + 2LL * N * P, name);
@@ -217,7 +217,7 @@ MeshData makeGenusSurface(const GenusSurfaceOptions& options) {
 
   MeshData data;
   data.source = "genus surface(g=" + std::to_string(g) + ", resolution=" + std::to_string(N) +
-                ", cell=" + fmt(options.cellSize) + ")";
+                ", cell=" + shortestDecimal(options.cellSize) + ")";
   // Top sheet (z = cellSize) first, then the bottom sheet (z = 0) with the same numbering shifted by nSheet.
   std::vector<int> sheetId(static_cast<std::size_t>(X + 1) * (Y + 1), -1);
   auto gridIndex = [&](int i, int j) { return static_cast<std::size_t>(i) * (Y + 1) + j; };
@@ -300,12 +300,12 @@ MeshData makeGenusSurface(const GenusSurfaceOptions& options) {
 MeshData makeDisk(const DiskOptions& options) {
   const std::string name = "disk";
   const int N = options.rings;
-  require(N >= 1 && N <= 100000, name, "rings must be in 1..100000, found " + std::to_string(N));
-  require(finitePositive(options.radius), name, "radius must be finite and positive, found " + fmt(options.radius));
+  requireGenerator(N >= 1 && N <= 100000, name, "rings must be in 1..100000, found " + std::to_string(N));
+  requireGenerator(finitePositive(options.radius), name, "radius must be finite and positive, found " + shortestDecimal(options.radius));
   requireFaceCount(6LL * N * N, name);
 
   MeshData data;
-  data.source = "disk(rings=" + std::to_string(N) + ", radius=" + fmt(options.radius) + ")";
+  data.source = "disk(rings=" + std::to_string(N) + ", radius=" + shortestDecimal(options.radius) + ")";
   data.nVertices = 3 * N * (N + 1) + 1;
   data.positions.reserve(data.nVertices);
   data.positions.push_back({0, 0, 0});
@@ -342,13 +342,13 @@ MeshData makeDisk(const DiskOptions& options) {
 int annulusRingVertexCount(const AnnulusOptions& options) {
   const std::string name = "annulus";
   const double r1 = options.innerRadius, r2 = options.outerRadius;
-  require(finitePositive(r1) && std::isfinite(r2) && r1 < r2, name,
-          "radii must satisfy 0 < r1 < r2, found r1=" + fmt(r1) + ", r2=" + fmt(r2));
-  require(options.rings >= 1 && options.rings <= 100000, name,
+  requireGenerator(finitePositive(r1) && std::isfinite(r2) && r1 < r2, name,
+          "radii must satisfy 0 < r1 < r2, found r1=" + shortestDecimal(r1) + ", r2=" + shortestDecimal(r2));
+  requireGenerator(options.rings >= 1 && options.rings <= 100000, name,
           "rings must be in 1..100000, found " + std::to_string(options.rings));
   const double n = std::round(2 * kPi * options.rings / std::log(r2 / r1));
-  require(n <= static_cast<double>(kMaxFaces), name,
-          "r2/r1 = " + fmt(r2 / r1) + " is so close to 1 that square cells need " + fmt(n) + " vertices per ring");
+  requireGenerator(n <= static_cast<double>(kMaxFaces), name,
+          "r2/r1 = " + shortestDecimal(r2 / r1) + " is so close to 1 that square cells need " + shortestDecimal(n) + " vertices per ring");
   return std::max(3, static_cast<int>(n));
 }
 
@@ -358,7 +358,7 @@ MeshData makeAnnulus(const AnnulusOptions& options) {
   requireFaceCount(2LL * n * N, "annulus");
 
   MeshData data;
-  data.source = "annulus(r1=" + fmt(r1) + ", r2=" + fmt(r2) + ", rings=" + std::to_string(N) + ")";
+  data.source = "annulus(r1=" + shortestDecimal(r1) + ", r2=" + shortestDecimal(r2) + ", rings=" + std::to_string(N) + ")";
   data.nVertices = n * (N + 1);
   data.positions.resize(data.nVertices);
   for (int k = 0; k <= N; ++k) {
@@ -402,14 +402,14 @@ MeshData makeFlatTorus(const FlatTorusOptions& options) {
   const std::string name = "flat torus";
   std::complex<double> w1 = options.omega1, w2 = options.omega2;
   const int n = options.n;
-  require(std::isfinite(w1.real()) && std::isfinite(w1.imag()) && std::isfinite(w2.real()) && std::isfinite(w2.imag()),
+  requireGenerator(std::isfinite(w1.real()) && std::isfinite(w1.imag()) && std::isfinite(w2.real()) && std::isfinite(w2.imag()),
           name, "periods must be finite");
   // Relative test: the parallelogram's area against the product of its sides (sin of the angle between the periods).
   const double cross = std::imag(std::conj(w1) * w2);
-  require(std::abs(cross) > 1e-12 * std::abs(w1) * std::abs(w2), name,
-          "periods ω1=" + fmt(w1.real()) + "+" + fmt(w1.imag()) + "i and ω2=" + fmt(w2.real()) + "+" + fmt(w2.imag()) +
-              "i are linearly dependent over R (Im(conj(ω1)·ω2) = " + fmt(cross) + ")");
-  require(n >= 1 && n <= 30000, name, "n must be in 1..30000, found " + std::to_string(n));
+  requireGenerator(std::abs(cross) > 1e-12 * std::abs(w1) * std::abs(w2), name,
+          "periods ω1=" + shortestDecimal(w1.real()) + "+" + shortestDecimal(w1.imag()) + "i and ω2=" + shortestDecimal(w2.real()) + "+" + shortestDecimal(w2.imag()) +
+              "i are linearly dependent over R (Im(conj(ω1)·ω2) = " + shortestDecimal(cross) + ")");
+  requireGenerator(n >= 1 && n <= 30000, name, "n must be in 1..30000, found " + std::to_string(n));
   if (options.reduceBasis) std::tie(w1, w2) = reduceLatticeBasis(w1, w2);
 
   const double l1 = std::abs(w1) / n, l2 = std::abs(w2) / n;
@@ -417,7 +417,7 @@ MeshData makeFlatTorus(const FlatTorusOptions& options) {
   const bool mainDiagonal = lPlus <= lMinus;  // the shorter diagonal joins the obtuse corners: Delaunay
 
   MeshData data;
-  auto fmtComplex = [](std::complex<double> z) { return "(" + fmt(z.real()) + "," + fmt(z.imag()) + ")"; };
+  auto fmtComplex = [](std::complex<double> z) { return "(" + shortestDecimal(z.real()) + "," + shortestDecimal(z.imag()) + ")"; };
   data.source = "flat torus(omega1=" + fmtComplex(options.omega1) + ", omega2=" + fmtComplex(options.omega2) +
                 ", n=" + std::to_string(n) + (options.reduceBasis ? ", reduced basis)" : ")");
   data.nVertices = n * n;
@@ -551,7 +551,7 @@ class LengthPerturbation {
   // The amplitude's range, the corner-edge table's size and the faces' vertex indices.
   void checkInput() {
     if (!(amplitude_ >= 0 && amplitude_ < 1))
-      fail("perturbation amplitude must be in [0, 1) so lengths stay positive, found " + fmt(amplitude_));
+      fail("perturbation amplitude must be in [0, 1) so lengths stay positive, found " + shortestDecimal(amplitude_));
     nF_ = static_cast<int>(data_.faces.size()), nV_ = data_.nVertices;
     if (!data_.cornerEdges.empty() && data_.cornerEdges.size() != data_.faces.size())
       fail("cornerEdges has " + std::to_string(data_.cornerEdges.size()) + " entries, expected one per face (" +
@@ -568,7 +568,7 @@ class LengthPerturbation {
     for (std::size_t e = 0; e < data_.edges.size(); ++e) {
       const auto& rec = data_.edges[e];
       if (!finitePositive(rec.length))
-        fail("edge " + std::to_string(e) + " has length " + fmt(rec.length) + ", expected finite and positive");
+        fail("edge " + std::to_string(e) + " has length " + shortestDecimal(rec.length) + ", expected finite and positive");
       base_.push_back(rec.length);
     }
     if (!data_.cornerEdges.empty())
@@ -685,7 +685,7 @@ class LengthPerturbation {
       const double s0 = relativeSlack(base_[fe[0]], base_[fe[1]], base_[fe[2]]);
       if (!(s0 > 0))
         fail("face " + std::to_string(f) + " violates the triangle inequality before perturbation: lengths " +
-             fmt(base_[fe[0]]) + ", " + fmt(base_[fe[1]]) + ", " + fmt(base_[fe[2]]));
+             shortestDecimal(base_[fe[0]]) + ", " + shortestDecimal(base_[fe[1]]) + ", " + shortestDecimal(base_[fe[2]]));
       required_[f] = std::min(kPerturbMinRelativeSlack, s0 / 2);
     }
   }

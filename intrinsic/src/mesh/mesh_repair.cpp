@@ -20,7 +20,7 @@ namespace conformesh::intrinsic {
 
 namespace {
 
-std::uint64_t pairKey(int a, int b) {
+std::uint64_t repairPairKey(int a, int b) {
   const auto lo = static_cast<std::uint64_t>(std::min(a, b)), hi = static_cast<std::uint64_t>(std::max(a, b));
   return (hi << 32) | lo;
 }
@@ -117,11 +117,11 @@ class MeshRepairer {
     std::unordered_map<std::uint64_t, int> uses;
     uses.reserve(2 * faces_.size());
     for (const auto& f : faces_)
-      for (int k = 0; k < 3; ++k) ++uses[pairKey(f[k], f[(k + 1) % 3])];
+      for (int k = 0; k < 3; ++k) ++uses[repairPairKey(f[k], f[(k + 1) % 3])];
     std::vector<char> on(in_.nVertices, 0);
     for (const auto& f : faces_)
       for (int k = 0; k < 3; ++k)
-        if (uses[pairKey(f[k], f[(k + 1) % 3])] == 1) on[f[k]] = on[f[(k + 1) % 3]] = 1;
+        if (uses[repairPairKey(f[k], f[(k + 1) % 3])] == 1) on[f[k]] = on[f[(k + 1) % 3]] = 1;
     return on;
   }
 
@@ -136,7 +136,7 @@ class MeshRepairer {
       if (0.5 * n.norm() <= o_.degenerateTolerance * longest * longest) return true;
     } else {
       for (int k = 0; k < 3; ++k) {
-        const auto it = lengthOf_.find(pairKey(origin_[v[k]], origin_[v[(k + 1) % 3]]));
+        const auto it = lengthOf_.find(repairPairKey(origin_[v[k]], origin_[v[(k + 1) % 3]]));
         if (it == lengthOf_.end()) return false;  // toTriangulation names the missing length
         l[k] = it->second;
       }
@@ -146,7 +146,7 @@ class MeshRepairer {
 
   void dropDegenerateFaces() {
     for (size_t i = 0; i < in_.edges.size(); ++i)
-      lengthOf_.emplace(pairKey(in_.edges[i].v0, in_.edges[i].v1), in_.edges[i].length);
+      lengthOf_.emplace(repairPairKey(in_.edges[i].v0, in_.edges[i].v1), in_.edges[i].length);
     keepFaces([&](size_t f) {
       if (!degenerate(faces_[f])) return true;
       note(report_.degenerateFaces, faceText(faceOrigin_[f], in_.faces[faceOrigin_[f]]));
@@ -157,18 +157,18 @@ class MeshRepairer {
   void dropDuplicateFaces() {
     struct TripleHash {
       size_t operator()(const std::array<int, 3>& t) const {
-        return std::hash<std::uint64_t>()(pairKey(t[0], t[1]) * 1000003ULL ^ static_cast<std::uint64_t>(t[2]));
+        return std::hash<std::uint64_t>()(repairPairKey(t[0], t[1]) * 1000003ULL ^ static_cast<std::uint64_t>(t[2]));
       }
     };
     std::unordered_map<std::array<int, 3>, int, TripleHash> seen;
     seen.reserve(2 * faces_.size());
     std::unordered_map<std::uint64_t, int> uses;
     for (const auto& f : faces_)
-      for (int k = 0; k < 3; ++k) ++uses[pairKey(f[k], f[(k + 1) % 3])];
+      for (int k = 0; k < 3; ++k) ++uses[repairPairKey(f[k], f[(k + 1) % 3])];
     keepFaces([&](size_t f) {
       // A face and its copy alone on their edges close up (the doubled triangle, a valid surface): kept.
       bool crowded = false;
-      for (int k = 0; k < 3; ++k) crowded = crowded || uses[pairKey(faces_[f][k], faces_[f][(k + 1) % 3])] > 2;
+      for (int k = 0; k < 3; ++k) crowded = crowded || uses[repairPairKey(faces_[f][k], faces_[f][(k + 1) % 3])] > 2;
       if (!crowded) return true;
       std::array<int, 3> k = faces_[f];
       std::sort(k.begin(), k.end());
@@ -198,7 +198,7 @@ class MeshRepairer {
     std::unordered_map<std::uint64_t, std::vector<int>> groups;
     groups.reserve(2 * faces_.size());
     for (size_t f = 0; f < faces_.size(); ++f)
-      for (int k = 0; k < 3; ++k) groups[pairKey(faces_[f][k], faces_[f][(k + 1) % 3])].push_back(3 * f + k);
+      for (int k = 0; k < 3; ++k) groups[repairPairKey(faces_[f][k], faces_[f][(k + 1) % 3])].push_back(3 * f + k);
     return groups;
   }
 
@@ -328,13 +328,13 @@ MeshData MeshRepairer::carryAlong(const std::vector<int>& vertexOf) const {
   }
   if (in_.edges.empty()) return out;
   std::unordered_map<std::uint64_t, int> recordOf;
-  for (size_t i = 0; i < in_.edges.size(); ++i) recordOf.emplace(pairKey(in_.edges[i].v0, in_.edges[i].v1), i);
+  for (size_t i = 0; i < in_.edges.size(); ++i) recordOf.emplace(repairPairKey(in_.edges[i].v0, in_.edges[i].v1), i);
   std::unordered_set<std::uint64_t> done;
   for (const auto& f : out.faces)
     for (int k = 0; k < 3; ++k) {
       const int a = f[k], b = f[(k + 1) % 3];
-      if (!done.insert(pairKey(a, b)).second) continue;
-      const auto it = recordOf.find(pairKey(origin_[vertexOf[a]], origin_[vertexOf[b]]));
+      if (!done.insert(repairPairKey(a, b)).second) continue;
+      const auto it = recordOf.find(repairPairKey(origin_[vertexOf[a]], origin_[vertexOf[b]]));
       if (it == recordOf.end())
         throw InputError(describeAt(in_.source, "edge (" + std::to_string(origin_[vertexOf[a]]) + ", " +
                                                     std::to_string(origin_[vertexOf[b]]) +

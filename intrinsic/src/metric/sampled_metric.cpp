@@ -18,7 +18,7 @@ namespace conformesh::intrinsic {
 
 namespace {
 
-std::string at(const std::string& source, int line) {
+std::string sourceLine(const std::string& source, int line) {
   return source + ":" + std::to_string(line);
 }
 
@@ -84,7 +84,7 @@ SampledMetric::SampledMetric(const SampledField& field) : field_(field) {
       g << f.guu[k], f.guv[k], f.guv[k], f.gvv[k];
       const std::string where =
           f.lines.empty() ? src + ": grid node (" + std::to_string(i) + ", " + std::to_string(j) + ")"
-                          : at(src, f.lines[k]) + " (grid node " + std::to_string(i) + ", " + std::to_string(j) + ")";
+                          : sourceLine(src, f.lines[k]) + " (grid node " + std::to_string(i) + ", " + std::to_string(j) + ")";
       checkPositiveDefinite(g, where);
     }
 

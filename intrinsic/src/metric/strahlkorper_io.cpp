@@ -28,7 +28,7 @@ namespace {
 using hdf5_detail::Id;
 using metric_detail::fmt;
 
-int ylmIndex(int l, int m) {
+int strahlkorperYlmIndex(int l, int m) {
   return l * l + l + m;
 }
 
@@ -130,7 +130,7 @@ RadiusFit fitSampledRadius(const SampledRadius& s, int lMax, const std::string& 
   std::vector<Strahlkorper::Term> terms;
   for (int l = 0; l <= lMax; ++l)
     for (int m = -l; m <= l; ++m)
-      if (l == 0 || std::abs(a(ylmIndex(l, m))) > 1e-15 * std::abs(a(0))) terms.push_back({l, m, a(ylmIndex(l, m))});
+      if (l == 0 || std::abs(a(strahlkorperYlmIndex(l, m))) > 1e-15 * std::abs(a(0))) terms.push_back({l, m, a(strahlkorperYlmIndex(l, m))});
   fit.shape = Strahlkorper(s.center, terms);
   checkPositiveRadius(fit.shape, source);
   return fit;

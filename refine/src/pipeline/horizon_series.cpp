@@ -216,7 +216,7 @@ json rowOf(size_t k, const HorizonStep& s, const SweepCase& c, const std::option
   return row;
 }
 
-std::string csvField(const json& v) {
+std::string exactCsvField(const json& v) {
   if (v.is_null()) return "";
   if (v.is_string()) {
     std::string out = "\"";
@@ -236,7 +236,7 @@ std::string csvOf(const json& rows) {
   for (size_t i = 0; i < columns().size(); ++i) out << (i ? "," : "") << columns()[i];
   out << "\n";
   for (const json& row : rows) {
-    for (size_t i = 0; i < columns().size(); ++i) out << (i ? "," : "") << csvField(row[columns()[i]]);
+    for (size_t i = 0; i < columns().size(); ++i) out << (i ? "," : "") << exactCsvField(row[columns()[i]]);
     out << "\n";
   }
   return out.str();

@@ -20,7 +20,7 @@ using detail::Point;
 
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point t0) {
+double secondsSinceStart(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
@@ -158,7 +158,7 @@ class MeshRemeshPipeline {
     // Orientation of the map back, and the edges within one input face (on T0: with subdivisions, its faces).
     detail::checkAgainstLocations(t0.t0, out.mesh, pullBack.vertexImage(), out);
     out.quality = measureQuality(out.mesh);
-    out.seconds.pullBack = secondsSince(t);
+    out.seconds.pullBack = secondsSinceStart(t);
     return out;
   }
 
@@ -199,7 +199,7 @@ class MeshRemeshPipeline {
     say("uniformizing the input (" + std::to_string(t0.mesh.nVertices()) + " vertices) by discrete Ricci flow");
     Uniformization u = uniformize(t0, uni);
     out.uniformization = u.report;
-    out.seconds.uniformize = secondsSince(t);
+    out.seconds.uniformize = secondsSinceStart(t);
     return u;
   }
 
@@ -229,7 +229,7 @@ class MeshRemeshPipeline {
     noticeIfUnrefined(refined, epsilon_, out);
     out.refinement = refined.statistics;
     out.uniformQuality = measureQuality(refined.triangulation);
-    out.seconds.refine = secondsSince(t);
+    out.seconds.refine = secondsSinceStart(t);
     return refined;
   }
 
@@ -253,7 +253,7 @@ class MeshRemeshPipeline {
     out.pathLength = out.mesh.edgeLengths;  // each edge is a geodesic of the input: its own path
     out.quality = measureQuality(out.mesh);
     out.uniformQuality = out.quality;
-    out.seconds.pullBack = secondsSince(t);
+    out.seconds.pullBack = secondsSinceStart(t);
     return out;
   }
 
@@ -269,7 +269,7 @@ class MeshRemeshPipeline {
     RefineResult refined = refineDelaunay(input_, ref);
     noticeIfUnrefined(refined, epsilon_, out);
     out.refinement = refined.statistics;
-    out.seconds.refine = secondsSince(t);
+    out.seconds.refine = secondsSinceStart(t);
     return refined;
   }
 

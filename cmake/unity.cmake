@@ -1,0 +1,14 @@
+# Unity builds of the libraries and the conformesh command (CMake's UNITY_BUILD): each target's sources are compiled
+# in a few combined translation units, so Eigen, CLI11 and nlohmann-json are parsed and their templates instantiated
+# once per batch instead of once per file. From scratch this halves the CPU time of `bootstrap.sh run` (measured:
+# docs/benchmarks.md, "Build time"); rebuilding after one edit recompiles a whole batch, so developers' builds keep it
+# off. Every source is written to compile both ways: file-local helpers have names unique within their library.
+option(CONFORMESH_UNITY_BUILD "Compile the libraries and the conformesh command as a few combined sources each" OFF)
+
+# conformesh_unity_build(TARGET BATCH): with CONFORMESH_UNITY_BUILD, compile TARGET in batches of BATCH sources; BATCH is
+# chosen per target so that each target has at least two batches and both cores of a small machine stay busy.
+function(conformesh_unity_build target batch)
+  if(CONFORMESH_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${batch})
+  endif()
+endfunction()
