@@ -54,8 +54,9 @@ TEST_CASE("remesh --refine-in uniformized: an output whose area is not the input
     const fs::path failed = out.parent_path() / (out.stem().string() + ".failed.ply");
     fs::remove(out);
     fs::remove(failed);
-    const auto r = runConformesh("-q remesh " + mesh(name) + " --eps-rel 0.05 --no-check --keep-failed -o " +
-                                 out.string() + " --json");
+    const auto r = runConformesh("-q remesh " + mesh(name) +
+                                 " --eps-rel 0.05 --refine-in uniformized --no-check --keep-failed -o " + out.string() +
+                                 " --json");
     INFO(r.err);
     REQUIRE((r.status == 0 || r.status == 3));
     const auto j = nlohmann::json::parse(r.out);
@@ -72,8 +73,9 @@ TEST_CASE("remesh --refine-in uniformized: an output whose area is not the input
 
 TEST_CASE("remesh lion.off (uniformized): the flow's runaway flip log is refused in seconds, naming the count") {
   const auto t = std::chrono::steady_clock::now();
-  const auto r = runConformesh("-q remesh " + mesh("lion.off") + " --eps-rel 0.05 --no-check -o " +
-                               (conformesh::testing::scratchDir() / "lion.ply").string());
+  const auto r =
+      runConformesh("-q remesh " + mesh("lion.off") + " --eps-rel 0.05 --refine-in uniformized --no-check -o " +
+                    (conformesh::testing::scratchDir() / "lion.ply").string());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   CHECK(r.status == 1);
   CHECK(r.err.find("Ptolemy flips") != std::string::npos);
