@@ -50,7 +50,8 @@ TEST_CASE("remesh --refine-in input: femur, cheese, diplodocus, mannequin-devil 
 // 2.0e-11 (relative to the edge); 3e-11 is docs/cli.md's bound of the latter.
 TEST_CASE("remesh hedra.off (default input route): a point moved onto an edge is located where it is inserted") {
   const fs::path out = conformesh::testing::scratchDir() / "hedra_input.ply";
-  const auto r = runConformesh("-q remesh " + mesh("hedra.off") + " --eps-rel 0.1 --no-check --json -o " + out.string());
+  const auto r =
+      runConformesh("-q remesh " + mesh("hedra.off") + " --eps-rel 0.1 --no-check --json -o " + out.string());
   INFO(r.err);
   REQUIRE(r.status == 0);
   const auto j = nlohmann::json::parse(r.out);

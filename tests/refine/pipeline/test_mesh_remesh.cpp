@@ -256,7 +256,7 @@ TEST_CASE("mesh remesh in the input metric: Ruppert's bound with the output's ow
   }
 }
 
-TEST_CASE("mesh remesh: the default route is the input's (angle bound kept); the uniformized one stays reachable") {
+TEST_CASE("mesh remesh: the default route is the input's (angle bound kept), the uniformized one stays reachable") {
   // Issue #18 item 6: the default keeps Ruppert's bound in the input's own metric, arcsin(1 / (2√2)) = 20.70° at
   // B = √2, measured here with the output's own lengths; the paper's route must still be selectable explicitly.
   const MeshInput in = cgalMesh("eight.off");
