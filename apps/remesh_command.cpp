@@ -39,7 +39,7 @@ struct RemeshArgs {
   int checkSample = 0;
   int smoothing = refine::RemeshOptions{}.refinement.smoothingPasses;
   std::string smoothingRule = "odt";
-  std::string refineIn = "uniformized";
+  std::string refineIn;  // "": per input kind (mesh files: input; smooth metrics: uniformized, the only one)
   std::string segmentRule = "ruppert";
   HorizonInput horizon;
   bool keepFailed = false;
@@ -128,12 +128,13 @@ void run(const RemeshArgs& a) {
   if (!a.epsGiven) throw UsageError("--eps E or --eps-rel F is required");
   if (a.embed && isMeshFilePath(a.family))
     throw InputError("remesh: --embed applies to smooth metrics; for a mesh file run `conformesh embed` on the output");
-  if (isMeshFilePath(
-          a.family))  // a mesh file: pull back through its faces, or refine in its metric (remesh_mesh_input.h)
+  // A mesh file: refine in its own metric (the default: it keeps the angle bound there), or uniformize, refine and
+  // pull back through its faces (remesh_mesh_input.h).
+  if (isMeshFilePath(a.family))
     return runRemeshMesh({a.family, a.epsilon, a.ratio, a.uniform, a.output, a.vtk, a.json, a.noCheck, a.ascii,
-                          a.refineIn, a.smoothing, a.smoothingRule, a.segmentRule, a.keepFailed, a.epsilonRelative,
-                          a.maxVertices});
-  if (a.refineIn != "uniformized")
+                          a.refineIn.empty() ? "input" : a.refineIn, a.smoothing, a.smoothingRule, a.segmentRule,
+                          a.keepFailed, a.epsilonRelative, a.maxVertices});
+  if (!a.refineIn.empty() && a.refineIn != "uniformized")
     throw InputError("remesh: --refine-in " + a.refineIn +
                      " applies to mesh files; a smooth metric is refined uniformized");
   const std::unique_ptr<intrinsic::SmoothMetric> metric = loadMetricOrHorizon("remesh", a.family, a.params, a.field, a.horizon);
@@ -248,9 +249,9 @@ void registerRemeshCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   addSmoothingOptions(sub, a->smoothing, a->smoothingRule, "; mesh files: input route only");
-  sub->add_option("--refine-in", a->refineIn, "Mesh files: refine in the uniformized or the input metric")
-      ->check(oneOf({"uniformized", "input"}))
-      ->capture_default_str();
+  sub->add_option("--refine-in", a->refineIn,
+                  "Refine in: input (mesh files' default, keeps the angles) or uniformized (smooth metrics' only)")
+      ->check(oneOf({"uniformized", "input"}));
   sub->add_flag("--embed", a->embed,
                 "Smooth metrics without a known embedding: fit R^3 positions, written when isometric (off)");
   sub->add_flag("--ascii", a->ascii, "Write ASCII PLY instead of binary");

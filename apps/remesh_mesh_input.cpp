@@ -1,5 +1,5 @@
-// remesh_mesh_input.cpp — `conformesh remesh MESHFILE --eps E [--refine-in uniformized|input] -o OUT.ply`:
-// uniformize the input mesh, refine, pull back through its faces, or refine the input in its own metric
+// remesh_mesh_input.cpp — `conformesh remesh MESHFILE --eps E [--refine-in input|uniformized] -o OUT.ply`: refine
+// the input in its own metric (the default), or uniformize it, refine and pull back through its faces
 // (refine/pipeline/mesh_remesh.h); print the quality in the input's metric and the curvature-measure check against the
 // input's own angle deficits (meshCurvatureMeasure). Parsing and printing only.
 #include "remesh_mesh_input.h"

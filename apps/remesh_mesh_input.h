@@ -1,6 +1,7 @@
 // remesh_mesh_input.h — the mesh-file branch of `conformesh remesh`: when INPUT names a mesh file (.off, .obj, .ply),
-// the pipeline is uniformize → refine → pull back through the input faces (refine/pipeline/mesh_remesh.h), or with
-// `--refine-in input` the refinement of the input in its own metric; the curvature check compares the output's angle
+// the pipeline is the refinement of the input in its own metric (the default, `--refine-in input`: it keeps the angle
+// bound there), or with `--refine-in uniformized` uniformize → refine → pull back through the input faces
+// (refine/pipeline/mesh_remesh.h); the curvature check compares the output's angle
 // deficits with the input's own over the same balls. Parsing and printing only.
 #pragma once
 
@@ -18,7 +19,7 @@ struct MeshRemeshCliArgs {
   bool uniform = false;
   std::string output, vtk;
   bool json = false, noCheck = false, ascii = false;
-  std::string refineIn = "uniformized";  // refine::parseRefineMetric
+  std::string refineIn = "input";        // refine::parseRefineMetric
   int smoothing = 0;                     // smoothing passes, input route only (the uniformized route is unsmoothed)
   std::string smoothingRule = "odt";     // refine::parseSmoothingRule
   std::string segmentRule = "ruppert";   // refine::parseSegmentRule

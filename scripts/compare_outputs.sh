@@ -29,7 +29,8 @@ run_all() {  # $1 = binary, $2 = output folder
   "$cm" -q refine kerr-uniform.ply --eps 0.1 -o kerr-refined.ply --json > refine.json 2> refine.err
   "$cm" -q generate disk --rings 3 -o disk.ply > /dev/null 2>&1
   "$cm" -q refine disk.ply --eps 0.02 --ratio 1.12 --segment-rule chew -o disk-chew.ply > refine-chew.txt 2>&1
-  "$cm" -q remesh "$meshes/eight.off" --eps 0.02 -o eight.ply --vtk eight.vtk --json > eight.json 2> eight.err
+  "$cm" -q remesh "$meshes/eight.off" --eps 0.02 --refine-in uniformized -o eight.ply --vtk eight.vtk --json > eight.json \
+    2> eight.err
   "$cm" -q remesh "$meshes/eight.off" --eps 0.02 --refine-in input -o eight-input.ply --json > eight-input.json 2>&1
   "$cm" -q layout "$meshes/double-torus-example.off" -o double-torus.svg --tiles 2 > layout.txt 2>&1
   "$cm" -q layout "$meshes/knot1.off" -o knot1-layout.ply > layout-knot.txt 2>&1

@@ -137,7 +137,8 @@ def off_face_min_angles(path, n_vertices):
 def where(exe, mesh, eps, tmp):
     """The uniformized route at eps: T1 against T1*, triangle by triangle (see the module docstring)."""
     t1, star, t1star = (os.path.join(tmp, n) for n in ("t1.ply", "t0star.ply", "t1star.ply"))
-    for cmd in ([exe, "-q", "remesh", mesh, "--eps", repr(eps), "--no-check", "--ascii", "-o", t1, "--json"],
+    for cmd in ([exe, "-q", "remesh", mesh, "--eps", repr(eps), "--refine-in", "uniformized", "--no-check", "--ascii",
+                 "-o", t1, "--json"],
                 [exe, "-q", "uniformize", mesh, "-o", star, "--json"],
                 [exe, "-q", "refine", star, "--eps", repr(eps), "--ascii", "-o", t1star, "--json"]):
         r = subprocess.run(cmd, capture_output=True, text=True)

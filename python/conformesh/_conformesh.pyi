@@ -87,7 +87,7 @@ class RemeshResult:
 
 def remesh(source: Union["metrics.Metric", Triangulation], eps: float, check: bool = ..., *, ratio: float = ...,
            uniform: bool = ..., t0_resolution: int = ..., disk_target: str = ..., smoothing: Optional[int] = ...,
-           smoothing_rule: str = ..., segment_rule: str = ..., refine_in: str = ..., region: str = ...,
+           smoothing_rule: str = ..., segment_rule: str = ..., refine_in: Optional[str] = ..., region: str = ...,
            keep_failed: bool = ..., progress: Progress = ...) -> RemeshResult: ...
 
 class ConvergenceResult:

@@ -102,7 +102,8 @@ struct RemeshArgs {
   int t0Resolution = 0;
   std::string diskTarget = "auto";
   py::object smoothing = py::none();
-  std::string smoothingRule = "odt", segmentRule = "ruppert", refineIn = "uniformized", region = "ball";
+  std::string smoothingRule = "odt", segmentRule = "ruppert", region = "ball";
+  std::string refineIn;  // "" (refine_in=None): 'input' for a triangulation, 'uniformized' for a metric
   bool keepFailed = false;
 };
 
@@ -122,7 +123,7 @@ py::dict fieldsDict(const intrinsic::MeshData& d) {
 }
 
 RemeshResult remeshMetric(const Metric& metric, const RemeshArgs& a, CallGuard& guard) {
-  if (a.refineIn != "uniformized")
+  if (!a.refineIn.empty() && a.refineIn != "uniformized")
     inputError("remesh: refine_in='" + a.refineIn + "' applies to triangulations; a smooth metric is refined "
                "uniformized");
   refine::RemeshOptions o;
@@ -186,7 +187,8 @@ RemeshResult remeshTriangulation(const Triangulation& in, const RemeshArgs& a, C
   o.epsilon = a.eps;
   o.ratioBound = a.ratio;
   o.uniform = a.uniform;
-  o.refineIn = refine::parseRefineMetric(a.refineIn);
+  // The default keeps the angle bound in the input's metric, as the CLI's (docs/cli.md#remesh-meshfile).
+  o.refineIn = refine::parseRefineMetric(a.refineIn.empty() ? "input" : a.refineIn);
   const bool inInput = o.refineIn == refine::RefineMetric::Input;
   const int smoothing = a.smoothing.is_none() ? 0 : a.smoothing.cast<int>();
   if (!inInput && smoothing != 0)
@@ -245,13 +247,16 @@ RemeshResult remeshTriangulation(const Triangulation& in, const RemeshArgs& a, C
 
 RemeshResult remesh(const py::object& source, double eps, bool check, double ratio, bool uniform, int t0Resolution,
                     const std::string& diskTarget, const py::object& smoothing, const std::string& smoothingRule,
-                    const std::string& segmentRule, const std::string& refineIn, const std::string& region,
+                    const std::string& segmentRule, const py::object& refineIn, const std::string& region,
                     bool keepFailed, const py::object& progress) {
   if (!(eps > 0) || !std::isfinite(eps)) inputError("remesh: eps = " + formatNumber(eps) + " (expected a finite eps > 0)");
   if (!smoothing.is_none() && !py::isinstance<py::int_>(smoothing))
     inputError("remesh: smoothing must be an int or None");
-  RemeshArgs a{eps, check, ratio, uniform, t0Resolution, diskTarget, smoothing, smoothingRule, segmentRule, refineIn,
-               region, keepFailed};
+  if (!refineIn.is_none() && !py::isinstance<py::str>(refineIn))
+    inputError("remesh: refine_in must be 'input', 'uniformized' or None");
+  RemeshArgs a{eps,       check,         ratio,       uniform, t0Resolution, diskTarget,
+               smoothing, smoothingRule, segmentRule, region,  "",           keepFailed};
+  if (!refineIn.is_none()) a.refineIn = refineIn.cast<std::string>();
   CallGuard guard(progress);
   if (py::isinstance<Metric>(source)) return remeshMetric(source.cast<const Metric&>(), a, guard);
   if (py::isinstance<Triangulation>(source)) return remeshTriangulation(source.cast<const Triangulation&>(), a, guard);
@@ -333,12 +338,14 @@ unless keep_failed=True. Raises InputError (more than one component, bad lengths
   m.def("remesh", &remesh, py::arg("source"), py::arg("eps"), py::arg("check") = true, py::kw_only(),
         py::arg("ratio") = 1.4142135623730951, py::arg("uniform") = false, py::arg("t0_resolution") = 0,
         py::arg("disk_target") = "auto", py::arg("smoothing") = py::none(), py::arg("smoothing_rule") = "odt",
-        py::arg("segment_rule") = "ruppert", py::arg("refine_in") = "uniformized", py::arg("region") = "ball",
+        py::arg("segment_rule") = "ruppert", py::arg("refine_in") = py::none(), py::arg("region") = "ball",
         py::arg("keep_failed") = false, py::arg("progress") = py::none(), R"doc(
 The whole pipeline (`conformesh remesh`): on a metrics.Metric, discretize -> uniformize -> Delaunay-refine with
 circumradii <= eps (in the original metric) and circumradius/shortest edge <= ratio -> pull back, every output edge
-with its length in the original metric; on a Triangulation (Euclidean, one component), uniformize it, refine and pull
-back through its faces (refine_in='uniformized', the paper's) or refine it in its own metric (refine_in='input').
+with its length in the original metric; on a Triangulation (Euclidean, one component), refine it in its own metric
+(refine_in='input', the default for triangulations: it keeps the angle bound there) or uniformize it, refine and pull
+back through its faces (refine_in='uniformized', the paper's). refine_in=None: 'input' for a Triangulation,
+'uniformized' (the only route) for a Metric.
 With check=True the Gaussian curvature measure check runs (report['gaussian_curvature_measure'], fields 'error' and
 'relative_error'). Options as the CLI's: t0_resolution (0 = automatic), disk_target ('auto', 'circle',
 'keep-boundary'), smoothing (passes; None = the CLI's default), smoothing_rule ('odt', 'centroid'), segment_rule

@@ -181,6 +181,27 @@ TEST_CASE("sweep: case ids are stable and a bad spec is rejected with exit 2 nam
   CHECK_FALSE(fs::exists(dir / "o"));  // nothing run, nothing written
 }
 
+TEST_CASE("sweep: refine-in defaults as on remesh: input for a mesh file, uniformized for a metric") {
+  // A mesh case without refine-in is the one `remesh MESH` runs (the input route, docs/cli.md#remesh-meshfile); the
+  // uniformized route stays selectable and is another case (another id).
+  const fs::path dir = conformesh::testing::scratchDir() / "spec_route";
+  fs::create_directories(dir);
+  const std::string eight = std::string(CONFORMESH_TEST_DATA_DIR) + "/eight.off";
+  const json spec = {{"studies",
+                      {{{"input", eight}, {"eps", 0.05}},
+                       {{"input", eight}, {"eps", 0.05}, {"options", {{"refine-in", "uniformized"}}}},
+                       {{"input", "sphere"}, {"eps", 0.1}}}}};
+  const auto r = runConformesh("-q sweep " + writeSpec(dir, "route.json", spec).string() + " -o " +
+                               (dir / "o").string() + " --list");
+  REQUIRE(r.status == 0);
+  const json cases = json::parse(r.out);
+  REQUIRE(cases.size() == 3);
+  CHECK(cases[0]["options"]["refine-in"] == "input");
+  CHECK(cases[1]["options"]["refine-in"] == "uniformized");
+  CHECK(cases[2]["options"]["refine-in"] == "uniformized");
+  CHECK(cases[0]["id"] != cases[1]["id"]);
+}
+
 #ifdef CONFORMESH_MPIEXEC
 TEST_CASE("sweep: under mpirun -n 3 the table equals the serial table number for number") {
   const fs::path dir = conformesh::testing::scratchDir() / "mpi";

@@ -87,6 +87,7 @@ def test_remesh_metric_result():
 def test_remesh_triangulation(data_dir):
     t = conformesh.read(os.path.join(data_dir, "knot1.off"))
     r = conformesh.remesh(t, eps=0.08 * math.sqrt(t.total_area), check=False)
+    assert r.report["refine_in"] == "input"  # the default for a triangulation
     out = r.triangulation
     faces, bary = r.input_locations
     assert faces.shape == (out.num_vertices,) and bary.shape == (out.num_vertices, 3)
@@ -105,7 +106,34 @@ def test_remesh_errors(sphere_t0):
     with pytest.raises(conformesh.InputError, match="expected a conformesh"):
         conformesh.remesh("sphere", 0.3)
     with pytest.raises(conformesh.InputError, match="smoothing"):
-        conformesh.remesh(sphere_t0, 0.3, smoothing=1)
+        conformesh.remesh(sphere_t0, 0.3, refine_in="uniformized", smoothing=1)
+    with pytest.raises(conformesh.InputError, match="applies to triangulations"):
+        conformesh.remesh(m, 0.3, refine_in="input")
+    with pytest.raises(conformesh.InputError, match="refine_in"):
+        conformesh.remesh(sphere_t0, 0.3, refine_in=1)
+
+
+def _smallest_angle_deg(t):
+    """The smallest corner of `t` from its own lengths (law of cosines; independent of corner_angles)."""
+    a, b, c = t.lengths[:, 0], t.lengths[:, 1], t.lengths[:, 2]
+    worst = 180.0
+    for x, y, z in ((a, b, c), (b, c, a), (c, a, b)):  # the corner between sides x and y, opposite z
+        cos = np.clip((x * x + y * y - z * z) / (2 * x * y), -1, 1)
+        worst = min(worst, float(np.degrees(np.arccos(cos)).min()))
+    return worst
+
+
+def test_remesh_default_route_per_input(data_dir):
+    """refine_in=None: a Triangulation is refined in its own metric (Ruppert's 20.7 deg at ratio sqrt 2 in the output's
+    own lengths), a Metric uniformized; the paper's route stays reachable on a Triangulation."""
+    t = conformesh.read(os.path.join(data_dir, "eight.off"))
+    r = conformesh.remesh(t, 0.02, check=False)
+    assert r.report["refine_in"] == "input"
+    assert _smallest_angle_deg(r.triangulation) >= 20.7
+    u = conformesh.remesh(t, 0.02, check=False, refine_in="uniformized")
+    assert u.report["refine_in"] == "uniformized"
+    assert u.report["quality_uniformized"]["min_angle_deg"] >= 20.7  # the bound holds where that route refines
+    assert conformesh.remesh(metrics.family("sphere"), 0.3, check=False).report["eps"] == 0.3
 
 
 def test_convergence_order_kerr():

@@ -104,7 +104,9 @@ class Refiner {
   void splitSegment(int e);
   Vec3 segmentSplitPoint(int e, const LoopCircle& lc) const;  // arc midpoint, shell point or geodesic midpoint
   void insertAt(const TraceResult& trace, const InputSurface::Arrival& arrival);
-  void insertOnEdge(const TraceResult& trace, int cornerOpposite, const InputSurface::Arrival& arrival);
+  void insertOnEdge(const TraceResult& trace, int cornerOpposite);
+  // Where point t of trace.face's layout lies on the input: the geodesic from the face's corner j to t, followed there.
+  InputSurface::Arrival followOnInputTo(const TraceResult& trace, int j, const Vec3& t) const;
   void countInsertion();
   // === boundary tests and Chew's deletions (refiner_boundary.cpp)
   std::vector<int> encroachedByPoint(const TraceResult& trace) const;

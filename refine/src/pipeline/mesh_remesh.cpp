@@ -316,15 +316,17 @@ std::string MeshRemeshOptions::validate() const {
   if (inputSubdivisions < 0 || inputSubdivisions > 6)
     return "remesh: input subdivisions must be 0..6, found " + std::to_string(inputSubdivisions);
   if (refineIn != RefineMetric::Input) return "";
+  // The input route is the default, so each message names the switch to the route the setting belongs to.
   if (inputSubdivisions != 0)
-    return "remesh: input subdivisions apply when refining in the uniformized metric, not in the input's (found " +
+    return "remesh: input subdivisions apply when refining in the uniformized metric (--refine-in uniformized), not "
+           "in the input's (found " +
            std::to_string(inputSubdivisions) + ")";
   if (uniform)
-    return "remesh: --uniform (lambda = 0 in the uniformized domain) does not apply when refining in the input "
-           "metric, where the size bound is uniform on the input already";
+    return "remesh: --uniform (lambda = 0 in the uniformized domain) applies with --refine-in uniformized; refining "
+           "in the input metric (the default for meshes), the size bound is uniform on the input already";
   if (refinement.boundarySplit == BoundarySplit::Circle)
-    return "remesh: boundary splits on circles need the uniformized metric; the input's boundary is split at edge "
-           "midpoints";
+    return "remesh: boundary splits on circles need the uniformized metric (--refine-in uniformized); the input's "
+           "boundary is split at edge midpoints";
   return "";
 }
 

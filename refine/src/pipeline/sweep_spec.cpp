@@ -322,6 +322,10 @@ void expandStudy(const json& s, int index, const std::string& path, const fs::pa
     for (const json& p : paramPoints)
       for (const json& o : optionPoints) {
         json options = sweepOptionDefaults();
+        // refine-in defaults as on `remesh`: a mesh file is refined in its own metric (it keeps the angle bound
+        // there; docs/cli.md#remesh-meshfile), a metric uniformized (its only route). Filled in before hashing, so
+        // the id says which route ran.
+        if (in.kind == SweepInputKind::Mesh) options["refine-in"] = "input";
         for (const auto& [k, v] : o.items()) options[k] = v;
         const json groupKey = {{"input", in.key}, {"params", p}, {"options", options}};
         const std::string slug = name.empty() ? in.slug : slugOf(name);

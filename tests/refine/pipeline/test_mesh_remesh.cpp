@@ -27,9 +27,11 @@ using namespace conformesh::refine;
 
 namespace {
 
+// The uniformized route (the paper's; the default is the input route).
 MeshRemeshResult run(const MeshInput& in, double eps, int extraBisections = 0) {
   MeshRemeshOptions o;
   o.epsilon = eps;
+  o.refineIn = RefineMetric::Uniformized;
   o.extraBisections = extraBisections;
   return remeshMesh(in.triangulation, in.positions, o);
 }
@@ -254,6 +256,37 @@ TEST_CASE("mesh remesh in the input metric: Ruppert's bound with the output's ow
   }
 }
 
+TEST_CASE("mesh remesh: the default route is the input's (angle bound kept), the uniformized one stays reachable") {
+  // Issue #18 item 6: the default keeps Ruppert's bound in the input's own metric, arcsin(1 / (2√2)) = 20.70° at
+  // B = √2, measured here with the output's own lengths; the paper's route must still be selectable explicitly.
+  const MeshInput in = cgalMesh("eight.off");
+  const auto smallestAngle = [](const IntrinsicTriangulation& t) {
+    double smallest = 180;
+    for (int f = 0; f < t.mesh.nFaces(); ++f)
+      for (double a : flatTriangle(t.length(3 * f), t.length(3 * f + 1), t.length(3 * f + 2)).angleDeg)
+        smallest = std::min(smallest, a);
+    return smallest;
+  };
+  MeshRemeshOptions o;
+  o.epsilon = 0.02;
+  const MeshRemeshResult byDefault = remeshMesh(in.triangulation, in.positions, o);
+  REQUIRE(byDefault.refinedIn == RefineMetric::Input);
+  CHECK(smallestAngle(byDefault.mesh) >= 20.7);
+  CHECK(byDefault.maxSameFaceScaledError < 1e-9);
+  CHECK(byDefault.invertedTriangles == 0);
+
+  o.refineIn = RefineMetric::Uniformized;
+  const MeshRemeshResult uniformized = remeshMesh(in.triangulation, in.positions, o);
+  REQUIRE(uniformized.refinedIn == RefineMetric::Uniformized);
+  CHECK(uniformized.uniformization.target == UniformizationTarget::Hyperbolic);
+  // The bound holds in the uniformized metric, where that route refines ...
+  CHECK(uniformized.uniformQuality.minAngleDeg >= 20.7);
+  // ... and the piecewise-projective pull-back distorts it on the input (9.6° at this ε; docs/cli.md): the reason
+  // for the default. Should the pull-back ever keep the bound, the default deserves another look.
+  CHECK(smallestAngle(uniformized.mesh) < 20.7);
+  CHECK(uniformized.invertedTriangles == 0);
+}
+
 TEST_CASE("mesh remesh in the input metric: planar disk, every length is the distance of its ends' located positions") {
   // The input is a plane with a polygonal boundary: every geodesic is a straight segment, so each output length must
   // be the Euclidean distance of its two ends' positions interpolated at their input locations — every edge, not only
@@ -320,6 +353,7 @@ TEST_CASE("mesh remesh: bad input is named") {
     o.epsilon = -1;
     CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o), Catch::Contains("--eps"));
     o.epsilon = 0.1;
+    o.refineIn = RefineMetric::Uniformized;
     o.inputSubdivisions = 9;
     CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o), Catch::Contains("subdivisions"));
   }
@@ -328,23 +362,29 @@ TEST_CASE("mesh remesh: bad input is named") {
     MeshRemeshOptions o;
     o.epsilon = 0.1;
     o.refineIn = RefineMetric::Input;
+    // Each message names the route the setting belongs to (the input route is the default).
     o.inputSubdivisions = 1;
-    CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o), Catch::Contains("subdivisions"));
+    CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o),
+                      Catch::Contains("subdivisions") && Catch::Contains("--refine-in uniformized"));
     o.inputSubdivisions = 0;
     o.uniform = true;
-    CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o), Catch::Contains("--uniform"));
+    CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o),
+                      Catch::Contains("--uniform") && Catch::Contains("--refine-in uniformized"));
     o.uniform = false;
     o.refinement.boundarySplit = BoundarySplit::Circle;
-    CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o), Catch::Contains("circle"));
+    CHECK_THROWS_WITH(remeshMesh(in.triangulation, in.positions, o),
+                      Catch::Contains("circle") && Catch::Contains("--refine-in uniformized"));
     CHECK_THROWS_WITH(parseRefineMetric("flat"), Catch::Contains("flat") && Catch::Contains("uniformized, input"));
   }
 }
 
 TEST_CASE("MeshRemeshOptions::validate names what is wrong, and is empty for valid options") {
   MeshRemeshOptions o;
+  CHECK(o.refineIn == RefineMetric::Input);  // the default route
   CHECK_THAT(o.validate(), Catch::Contains("--eps") && Catch::Contains("found 0"));
   o.epsilon = 0.1;
   CHECK(o.validate().empty());
+  o.refineIn = RefineMetric::Uniformized;
   o.inputSubdivisions = 7;
   CHECK_THAT(o.validate(), Catch::Contains("0..6") && Catch::Contains("found 7"));
   o.inputSubdivisions = 2;

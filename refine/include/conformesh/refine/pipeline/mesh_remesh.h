@@ -3,7 +3,11 @@
 // flow (T0*, λ), Delaunay-refine T0* graded by e^(−λ) (T1*), pull back through the input faces (each output vertex
 // gets its input face and barycentric coordinates, each output edge the developed length of its image path across
 // the input faces); Input — Delaunay-refine T0 in its own flat cone metric. Both check the result against the input.
-// Pure functions of their arguments: no files, no global state (progress only through the callback).
+// The default is Input: it keeps the angle bound in the input's metric (≥ 20.7° at B = √2), while the uniformized
+// route's piecewise-projective pull-back distorts angles by a fixed amount per input face (eight.off at ε = 0.02:
+// 30.2° against 9.6°; docs/cli.md#remesh-meshfile). Metrics (metric_remesh.h) have no input faces and are always
+// refined uniformized. Pure functions of their arguments: no files, no global state (progress only through the
+// callback).
 // Derivations (image paths, development, why two routes): docs/refinement.md §9; the command: docs/cli.md.
 #pragma once
 
@@ -39,7 +43,7 @@ struct MeshRemeshOptions {
   // on the input (paper §4.2.3). Required, > 0.
   double epsilon = 0;
   double ratioBound = 1.4142135623730951;  // shape bound B (circumradius / shortest edge), RefineOptions::ratioBound
-  RefineMetric refineIn = RefineMetric::Uniformized;
+  RefineMetric refineIn = RefineMetric::Input;  // the default keeps the angle bound in the input's metric
   bool uniform = false;  // λ ≡ 0: uniform in the uniformized domain, for comparisons. Uniformized route only.
   // Midpoint (1-to-4) subdivisions of the input before uniformizing (the same flat surface, finer; lowers the
   // pull-back's angle distortion per face). 0..6; uniformized route only.

@@ -29,7 +29,8 @@ struct SweepCase {
   double epsilon = 0;                    // > 0, or 0 when targetVertices is given
   int targetVertices = 0;
   // Every remesh option by its long name (ratio, uniform, t0-resolution, disk-target, segment-rule, smoothing,
-  // smoothing-rule, refine-in, region, no-check, vtk), defaults filled in.
+  // smoothing-rule, refine-in, region, no-check, vtk), defaults filled in (refine-in: "input" for a mesh file,
+  // "uniformized" otherwise, as on `remesh`).
   nlohmann::json options;
   nlohmann::json key;  // what the id hashes: input (family or file name + content hash), params, level, options
   double cost = 0;     // relative work estimate (largest first): target vertices, or area-free 1/ε²
@@ -57,7 +58,8 @@ SweepSpec expandSweepSpec(const nlohmann::json& document, const std::string& pat
 // FNV-1a 64-bit of `bytes`, as 16 lower-case hex digits (the case ids' and the file content hashes' function).
 std::string fnv1a64Hex(const std::string& bytes);
 
-// The remesh options a spec's "options" may name, with their defaults (long names of `conformesh remesh`).
+// The remesh options a spec's "options" may name, with their defaults (long names of `conformesh remesh`); refine-in's
+// is that of metrics, a mesh file's case gets "input" (expandSweepSpec), as `remesh` does.
 const nlohmann::json& sweepOptionDefaults();
 
 }  // namespace conformesh::refine
