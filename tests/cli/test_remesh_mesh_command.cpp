@@ -254,7 +254,8 @@ TEST_CASE("several components: blobby_3cc.off and horizons.off summarized, unifo
 
   // The uniformized route's pull-back does not keep the annulus's area (a defect of that route on this component
   // alone too, docs/robustness.md): the verification names the component, exit 3.
-  const Run failed = runCli("-q remesh " + blobby + " --eps-rel 0.05 -o " + (dir() / "blobby_3cc_u.ply").string());
+  const Run failed = runCli("-q remesh " + blobby + " --eps-rel 0.05 --refine-in uniformized -o " +
+                            (dir() / "blobby_3cc_u.ply").string());
   CHECK(failed.status == 3);
   CHECK(failed.err.find("component 2 of 3 (701 vertices, 1285 faces, genus 0, 2 boundary loops): output area") !=
         std::string::npos);
