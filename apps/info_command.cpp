@@ -1,5 +1,6 @@
 // info_command.cpp — `conformesh info FILE`: the intrinsic report of a mesh (topology, curvature, Gauss–Bonnet,
 // angles, lengths, Delaunay-ness), as text or JSON; optionally writes its intrinsic Delaunay triangulation.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -48,6 +49,19 @@ void printText(const std::string& path, const intrinsic::MeshSummary& s, const i
   line("boundary loops", std::to_string(s.boundaryLoops));
   line("Euler characteristic", std::to_string(s.eulerCharacteristic));
   line("genus", std::to_string(s.genus) + (s.components.size() > 1 ? " (sum over components)" : ""));
+  // The first ten components; a mesh of many small parts (boeing.off has 122) lists the rest in --json only.
+  const std::size_t shown = std::min<std::size_t>(s.componentFigures.size(), 10);
+  if (shown < s.componentFigures.size())
+    line("  components listed", "the first " + std::to_string(shown) + " (--json lists all " +
+                                    std::to_string(s.componentFigures.size()) + ")");
+  for (std::size_t i = 0; i < shown; ++i) {
+    const intrinsic::ComponentTopology& c = s.components[i];
+    const intrinsic::ComponentFigures& f = s.componentFigures[i];
+    line(("  component " + std::to_string(i)).c_str(),
+         std::to_string(c.vertices) + " vertices, " + std::to_string(c.faces) + " faces, genus " +
+             std::to_string(c.genus) + ", " + std::to_string(c.boundaryLoops) + " boundary loops, area " + num(f.area) +
+             ", Gauss-Bonnet residual " + num(f.curvature.gaussBonnetResidual));
+  }
   line("total area", num(s.totalArea));
   line("total curvature", num(s.curvature.interiorDeficit + s.curvature.boundaryTurning) + "  (deficits " +
                               num(s.curvature.interiorDeficit) + ", boundary turning " +

@@ -12,9 +12,10 @@
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/io/vtk_writer.h"
-#include "conformesh/refine/pipeline/remesh_json.h"
+#include "conformesh/refine/pipeline/component_remesh.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/output_verification.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::apps {
 
@@ -26,8 +27,10 @@ bool isMeshFilePath(const std::string& input) {
   return false;
 }
 
-void runRemeshMesh(const MeshRemeshCliArgs& a) {
-  const refine::MeshInput in = refine::meshInputFromData(loadMesh(a.input));
+namespace {
+
+// The library's options from the command's arguments (both routes, one component or several).
+refine::MeshRemeshOptions remeshOptions(const MeshRemeshCliArgs& a) {
   refine::MeshRemeshOptions o;
   o.epsilon = a.epsilon;
   o.epsilonRelative = a.epsilonRelative;
@@ -46,6 +49,65 @@ void runRemeshMesh(const MeshRemeshCliArgs& a) {
   o.refinement.smoothingRule = refine::parseSmoothingRule(a.smoothingRule);
   o.refinement.segmentRule = refine::parseSegmentRule(a.segmentRule);
   o.progress = [](const std::string& s) { progress(s); };
+  return o;
+}
+
+// Several components (component_remesh.h): each remeshed alone, one merged file, one report per component.
+void runRemeshComponents(const MeshRemeshCliArgs& a, const refine::MeshInput& in, const refine::MeshRemeshOptions& o) {
+  const refine::ComponentRemesh r = refine::remeshComponents(in.triangulation, in.positions, o);
+  std::vector<intrinsic::MeshData> parts;
+  nlohmann::json j = refine::componentRemeshJson(r, in.triangulation, in.source, o);
+  for (std::size_t i = 0; i < r.parts.size(); ++i) {
+    printNotices(r.parts[i].notices);
+    parts.push_back(refine::toMeshData(r.parts[i], in.source, r.epsilon));
+    if (a.noCheck) continue;
+    progress("component " + std::to_string(i) + ": checking the Gaussian curvature measure");
+    intrinsic::CurvatureMeasureOptions co;
+    co.progress = countingProgress("curvature measure");
+    const intrinsic::CurvatureMeasureResult c =
+        refine::meshCurvatureMeasure(r.parts[i], r.components[i].triangulation, co);
+    j["components"][i]["gaussian_curvature_measure"] = refine::curvatureMeasureJson(c, co);
+    addCurvatureMeasureProperties(parts.back(), c);
+  }
+  const intrinsic::MeshData data = refine::mergeComponentOutputs(r, parts);
+  writeVerifiedMeshOutputs(
+      refine::verifyComponentRemesh(r), a.keepFailed, data, a.output, a.ascii, a.vtk,
+      [&] { return refine::componentsVtkMesh(data); }, a.json, j);
+  if (a.json) {
+    printJson(j);
+    return;
+  }
+  const bool inInput = o.refineIn == refine::RefineMetric::Input;
+  std::printf("%s (mesh: %d vertices, %d faces, %zu components; %s)\n", in.source.c_str(),
+              in.triangulation.mesh.nVertices(), in.triangulation.mesh.nFaces(), r.parts.size(),
+              inInput ? "refined in the input metric" : "refined uniformized, each component to its own target");
+  std::printf("  %-34s %d vertices, %d triangles\n", "output", j["output_mesh"]["vertices"].get<int>(),
+              j["output_mesh"]["faces"].get<int>());
+  for (const auto& c : j["components"]) {
+    std::printf("  component %-24d %d vertices, %d faces, genus %d, %d boundary loops%s\n", c["component"].get<int>(),
+                c["vertices"].get<int>(), c["faces"].get<int>(), c["genus"].get<int>(), c["boundary_loops"].get<int>(),
+                inInput ? "" : (", " + c["uniformization"]["target"].get<std::string>()).c_str());
+    std::printf("    %-32s %d vertices, smallest angle %.3f deg, Gauss-Bonnet residual %.3e\n", "output",
+                c["quality"]["vertices"].get<int>(), c["quality"]["min_angle_deg"].get<double>(),
+                c["quality"]["gauss_bonnet_residual"].get<double>());
+    std::printf("    %-32s %.10g (input %.10g)\n", "area", c["total_area"].get<double>(),
+                c["input_mesh"]["area"].get<double>());
+  }
+  std::printf("  %-34s %.10g (input %.10g)\n", "total area", j["total_area"].get<double>(),
+              j["input_mesh"]["area"].get<double>());
+  std::printf("  written to %s%s%s\n", a.output.c_str(), a.vtk.empty() ? "" : " and ", a.vtk.c_str());
+}
+
+}  // namespace
+
+void runRemeshMesh(const MeshRemeshCliArgs& a) {
+  const refine::MeshInput in = refine::meshInputFromData(loadMesh(a.input));
+  const refine::MeshRemeshOptions o = remeshOptions(a);
+  const bool inInput = o.refineIn == refine::RefineMetric::Input;
+  if (in.triangulation.mesh.components().size() > 1) {
+    runRemeshComponents(a, in, o);
+    return;
+  }
   const refine::MeshRemeshResult r = refine::remeshMesh(in.triangulation, in.positions, o);
   intrinsic::MeshData data = refine::toMeshData(r, in.source, r.epsilon);
   printNotices(r.notices);

@@ -7,13 +7,14 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "conformesh/intrinsic/flow/circle_packing.h"
-#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/flow/circle_packing.h"
 #include "conformesh/intrinsic/flow/uniformization.h"
-#include "conformesh/refine/pipeline/remesh_json.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
+#include "conformesh/intrinsic/mesh/mesh_components.h"
 #include "conformesh/refine/pipeline/output_verification.h"
+#include "conformesh/refine/pipeline/remesh_json.h"
 
 namespace conformesh::apps {
 
@@ -52,6 +53,83 @@ intrinsic::Uniformization runFlow(const UniformizeOptions& o, const intrinsic::I
   return intrinsic::uniformizeByCirclePacking(input, packing).result;
 }
 
+void writeCorrespondence(const std::string& path, const nlohmann::json& j) {
+  std::ofstream file(path);
+  if (!file) throw InputError(path + ": cannot open for writing");
+  file << j.dump() << '\n';
+  if (!file) throw InputError(path + ": write failed");
+}
+
+// The file of several components: each component's T0* in its own geometry (the header's is component 0's, each
+// component's in a comment when they differ: docs/formats.md), per-vertex lambda and component.
+intrinsic::MeshData mergedOutput(const UniformizeOptions& o, const intrinsic::ComponentUniformization& cu) {
+  std::vector<intrinsic::MeshData> parts;
+  bool positions = true, mixed = false;
+  for (const auto& u : cu.parts) {
+    positions = positions && !u.positions.empty();
+    mixed = mixed || u.uniform.background != cu.parts[0].uniform.background;
+  }
+  for (const auto& u : cu.parts) {
+    parts.push_back(intrinsic::fromTriangulation(u.uniform));
+    if (positions) parts.back().positions = u.positions;
+    parts.back().vertexProperties["lambda"] = u.lambda;
+  }
+  intrinsic::MeshData out = intrinsic::concatenateMeshData(parts);
+  out.source = o.output;
+  out.comments.push_back("uniformized by conformesh (" + o.method + " flow): " + std::to_string(cu.parts.size()) +
+                         " components, each to its own target (vertex property component)");
+  for (std::size_t i = 0; i < cu.parts.size(); ++i)
+    out.comments.push_back("component " + std::to_string(i) + " target " +
+                           intrinsic::toString(cu.parts[i].report.target) +
+                           (mixed ? " geometry " + intrinsic::toString(cu.parts[i].uniform.background) : ""));
+  return out;
+}
+
+// Several components (uniformizeComponents): one merged file, one report per component.
+void runUniformizeComponents(const UniformizeOptions& o, const intrinsic::IntrinsicTriangulation& input,
+                             const intrinsic::UniformizationOptions& options) {
+  const intrinsic::ComponentUniformization cu = intrinsic::uniformizeComponents(
+      input, options, [&o](const intrinsic::IntrinsicTriangulation& t, const intrinsic::UniformizationOptions& uo) {
+        return runFlow(o, t, uo);
+      });
+  nlohmann::json j = refine::componentUniformizationJson(cu);
+  j["input"] = o.input;
+  j["output"] = o.output;
+  j["method"] = o.method;
+  if (!o.correspondence.empty()) j["correspondence"] = o.correspondence;
+  refine::OutputVerification check;
+  const int n = static_cast<int>(cu.parts.size());
+  for (int i = 0; i < n; ++i)
+    for (const std::string& f : refine::verifyUniformization(cu.parts[i]).failures)
+      check.failures.push_back(intrinsic::describeComponent(i, n, cu.components[i].topology) + ": " + f);
+  const std::string written = verifiedOutputPath(check, o.keepFailed, o.output, j);
+  if (!written.empty()) intrinsic::writeMesh(mergedOutput(o, cu), written);
+  rejectIfFailed(check, o.output, written, o.json, j);
+  if (!o.correspondence.empty()) {
+    nlohmann::json maps = nlohmann::json::array();
+    for (const auto& u : cu.parts) maps.push_back(correspondenceJson(u.correspondence));
+    writeCorrespondence(o.correspondence,
+                        {{"format", "conformesh flow correspondence components 1"}, {"components", maps}});
+  }
+  if (o.json) {
+    printJson(j);
+    return;
+  }
+  std::printf("%s -> %s\n", o.input.c_str(), o.output.c_str());
+  std::printf("  %-30s %d, each uniformized to its own target, %.2f s\n", "components", n, cu.seconds);
+  for (const auto& c : j["components"]) {
+    std::printf("  component %-20d %d vertices, %d faces, genus %d, %d boundary loops\n", c["component"].get<int>(),
+                c["vertices"].get<int>(), c["faces"].get<int>(), c["genus"].get<int>(), c["boundary_loops"].get<int>());
+    std::printf("    %-28s %s (curvature %g), %d Newton steps, %lld flips\n", "target",
+                c["target"].get<std::string>().c_str(), c["target_curvature"].get<double>(),
+                c["newton_steps"].get<int>(), c["flips"].get<long long>());
+    std::printf("    %-28s max |K - K^| %.3g rad, Gauss-Bonnet residual %.3g\n", "residuals",
+                c["max_curvature_residual"].get<double>(), c["gauss_bonnet_residual"].get<double>());
+    std::printf("    %-28s %.12g\n", "area", c["total_area"].get<double>());
+  }
+  std::printf("  %-30s %.12g (sum over components)\n", "total area", j["total_area"].get<double>());
+}
+
 void runUniformize(const UniformizeOptions& o) {
   progress("reading " + o.input);
   const intrinsic::MeshData data = loadMesh(o.input);
@@ -60,6 +138,10 @@ void runUniformize(const UniformizeOptions& o) {
   options.flow.tolerance = o.tolerance;
   options.flow.maxNewtonSteps = o.maxSteps;
   options.progress = [](const std::string& line) { progress(line); };
+  if (input.mesh.components().size() > 1) {
+    runUniformizeComponents(o, input, options);
+    return;
+  }
   const intrinsic::Uniformization u = runFlow(o, input, options);
 
   intrinsic::MeshData out = intrinsic::fromTriangulation(u.uniform);
@@ -78,12 +160,7 @@ void runUniformize(const UniformizeOptions& o) {
   const std::string written = verifiedOutputPath(check, o.keepFailed, o.output, j);
   if (!written.empty()) intrinsic::writeMesh(out, written);
   rejectIfFailed(check, o.output, written, o.json, j);
-  if (!o.correspondence.empty()) {
-    std::ofstream file(o.correspondence);
-    if (!file) throw InputError(o.correspondence + ": cannot open for writing");
-    file << correspondenceJson(u.correspondence).dump() << '\n';
-    if (!file) throw InputError(o.correspondence + ": write failed");
-  }
+  if (!o.correspondence.empty()) writeCorrespondence(o.correspondence, correspondenceJson(u.correspondence));
 
   if (o.json) {
     printJson(j);

@@ -39,6 +39,15 @@ struct UniformizeResult {
   py::object conformalFactor, geometry, positions, report;
 };
 
+// The module takes one connected surface per call: several components are refused up front with what to do (the
+// CLI remeshes and uniformizes each component to its own target, docs/cli.md).
+void rejectSeveralComponents(const std::string& what, const intrinsic::IntrinsicTriangulation& tri) {
+  const std::size_t n = tri.mesh.components().size();
+  if (n > 1)
+    inputError(what + ": the triangulation has " + std::to_string(n) +
+               " connected components; the Python module takes one at a time (the command line's `conformesh " + what +
+               "` handles several, each to its own target: docs/cli.md)");
+}
 
 UniformizeResult uniformize(const TriangulationPtr& in, double tolerance, int maxSteps, const std::string& method,
                             bool keepFailed, const py::object& progress) {
@@ -46,6 +55,7 @@ UniformizeResult uniformize(const TriangulationPtr& in, double tolerance, int ma
   if (maxSteps < 1) inputError("uniformize: max_steps must be >= 1");
   if (method != "yamabe" && method != "circle-packing" && method != "inversive-distance")
     inputError("uniformize: method '" + method + "' (expected 'yamabe', 'circle-packing' or 'inversive-distance')");
+  rejectSeveralComponents("uniformize", in->tri);
   CallGuard guard(progress);
   intrinsic::Uniformization u;
   {
@@ -201,6 +211,7 @@ RemeshResult remeshTriangulation(const Triangulation& in, const RemeshArgs& a, C
   o.refinement.segmentRule = refine::parseSegmentRule(a.segmentRule);
   o.progress = guard.lineCallback();
   wireRefinementChecks(o.refinement, guard);
+  rejectSeveralComponents("remesh", in.tri);
   auto shared = std::make_shared<refine::MeshRemeshResult>();
   auto data = std::make_shared<intrinsic::MeshData>();
   nlohmann::json j;

@@ -42,6 +42,15 @@ def test_uniformize_genus_two_hyperbolic(data_dir):
     assert r.triangulation.total_area == pytest.approx(4 * math.pi, rel=1e-7)
 
 
+def test_several_components_refused_clearly(data_dir):
+    # blobby_3cc.off has three connected components: the module takes one surface per call and says so.
+    t = conformesh.read(os.path.join(data_dir, "blobby_3cc.off"))
+    with pytest.raises(conformesh.InputError, match="3 connected components"):
+        conformesh.uniformize(t)
+    with pytest.raises(conformesh.InputError, match="3 connected components"):
+        conformesh.remesh(t, eps=0.1)
+
+
 def test_convergence_error(sphere_t0):
     with pytest.raises(conformesh.ConvergenceError):
         conformesh.uniformize(sphere_t0, tolerance=1e-14, max_steps=1)

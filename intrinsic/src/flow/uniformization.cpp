@@ -335,7 +335,7 @@ Uniformization uniformize(const IntrinsicTriangulation& input, const Uniformizat
   const std::vector<ComponentTopology> components = input.mesh.components();
   if (components.size() != 1)
     throw InputError("uniformize: the surface has " + std::to_string(components.size()) +
-                     " connected components; uniformize each separately");
+                     " connected components; uniformize each separately (uniformizeComponents)");
   UniformizationReport report;
   report.genus = components[0].genus;
   report.boundaryLoops = components[0].boundaryLoops;
@@ -355,6 +355,35 @@ Uniformization uniformize(const IntrinsicTriangulation& input, const Uniformizat
     out = uniformizeConstant(input, options, report, Background::Hyperbolic);
   }
   out.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+ComponentUniformization uniformizeComponents(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                             const ComponentFlow& flow) {
+  const auto start = std::chrono::steady_clock::now();
+  if (const std::string problem = options.validate(); !problem.empty()) throw InputError("uniformize: " + problem);
+  validateLengths(input, "uniformize");
+  ComponentUniformization out;
+  out.components = splitComponents(input);
+  const int n = static_cast<int>(out.components.size());
+  for (int i = 0; i < n; ++i) {
+    const MeshComponent& c = out.components[i];
+    UniformizationOptions own = options;
+    if (options.progress)
+      own.progress = [&options, i, n](const std::string& line) {
+        options.progress("component " + std::to_string(i) + "/" + std::to_string(n) + ": " + line);
+      };
+    // The component's own message keeps its own "uniformize: " prefix after the component's description.
+    const std::string where = "uniformize: " + describeComponent(i, n, c.topology) + ": ";
+    try {
+      out.parts.push_back(flow ? flow(c.triangulation, own) : uniformize(c.triangulation, own));
+    } catch (const InputError& e) {
+      throw InputError(where + e.what());
+    } catch (const ConvergenceError& e) {
+      throw ConvergenceError(where + e.what());
+    }
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 

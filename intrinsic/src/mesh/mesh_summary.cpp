@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "conformesh/intrinsic/mesh/intrinsic_flips.h"
+#include "conformesh/intrinsic/mesh/mesh_components.h"
 
 namespace conformesh::intrinsic {
 
@@ -33,6 +34,9 @@ MeshSummary summarize(const IntrinsicTriangulation& tri) {
   for (int e = 0; e < m.nEdges(); ++e) interior += !m.isBoundaryEdge(e);
   s.nonDelaunayEdges = countNonDelaunayEdges(tri);
   s.nonDelaunayFraction = interior > 0 ? static_cast<double>(s.nonDelaunayEdges) / interior : 0.0;
+  if (s.components.size() > 1)
+    for (const MeshComponent& c : splitComponents(tri))
+      s.componentFigures.push_back({totalArea(c.triangulation), curvatureTotals(c.triangulation)});
   return s;
 }
 

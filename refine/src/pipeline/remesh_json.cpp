@@ -95,6 +95,13 @@ nlohmann::json meshSummaryJson(const intrinsic::MeshSummary& s) {
                      {"boundary_loops", c.boundaryLoops},
                      {"euler_characteristic", c.eulerCharacteristic},
                      {"genus", c.genus}});
+  // Several components: each one's own area and Gauss–Bonnet (a connected surface's are the totals below).
+  for (std::size_t i = 0; i < s.componentFigures.size(); ++i) {
+    const intrinsic::ComponentFigures& f = s.componentFigures[i];
+    comps[i]["total_area"] = f.area;
+    comps[i]["total_curvature"] = f.curvature.interiorDeficit + f.curvature.boundaryTurning;
+    comps[i]["gauss_bonnet_residual"] = f.curvature.gaussBonnetResidual;
+  }
   return {{"background", intrinsic::toString(s.background)},
           {"vertices", s.vertices},
           {"edges", s.edges},
@@ -138,6 +145,29 @@ nlohmann::json uniformizedJson(const intrinsic::Uniformization& u) {
   }
   if (r.target == intrinsic::UniformizationTarget::FlatCylinder) j["cylinder_height"] = r.cylinderHeight;
   return j;
+}
+
+nlohmann::json componentTopologyJson(int index, const intrinsic::ComponentTopology& t) {
+  return {{"component", index},
+          {"vertices", t.vertices},
+          {"edges", t.edges},
+          {"faces", t.faces},
+          {"boundary_loops", t.boundaryLoops},
+          {"euler_characteristic", t.eulerCharacteristic},
+          {"genus", t.genus}};
+}
+
+nlohmann::json componentUniformizationJson(const intrinsic::ComponentUniformization& u) {
+  nlohmann::json parts = nlohmann::json::array();
+  double area = 0;
+  for (std::size_t i = 0; i < u.parts.size(); ++i) {
+    nlohmann::json j = uniformizedJson(u.parts[i]);
+    j.update(componentTopologyJson(static_cast<int>(i), u.components[i].topology));
+    j["target_curvature"] = intrinsic::backgroundCurvature(u.parts[i].uniform.background);
+    area += j["total_area"].get<double>();
+    parts.push_back(j);
+  }
+  return {{"component_count", u.parts.size()}, {"total_area", area}, {"seconds", u.seconds}, {"components", parts}};
 }
 
 nlohmann::json refineJson(const RefineResult& r, const intrinsic::IntrinsicTriangulation& input,
@@ -390,6 +420,32 @@ nlohmann::json killingJson(const intrinsic::IntrinsicTriangulation& mesh, const 
     j["south_pole"] = poleJson(mesh, k, k.southVertex, reference, domain);
   }
   return j;
+}
+
+nlohmann::json componentRemeshJson(const ComponentRemesh& r, const intrinsic::IntrinsicTriangulation& input,
+                                   const std::string& source, const MeshRemeshOptions& options) {
+  nlohmann::json parts = nlohmann::json::array();
+  double area = 0;
+  int vertices = 0, faces = 0;
+  for (std::size_t i = 0; i < r.parts.size(); ++i) {
+    nlohmann::json j = meshRemeshJson(r.parts[i], r.components[i].triangulation, source, options);
+    j.erase("input");
+    j.update(componentTopologyJson(static_cast<int>(i), r.components[i].topology));
+    area += intrinsic::totalArea(r.parts[i].mesh);
+    vertices += r.parts[i].mesh.mesh.nVertices();
+    faces += r.parts[i].mesh.mesh.nFaces();
+    parts.push_back(j);
+  }
+  return {
+      {"input", source},
+      {"eps", r.epsilon},
+      {"refine_in", toString(options.refineIn)},
+      {"component_count", r.parts.size()},
+      {"input_mesh",
+       {{"vertices", input.mesh.nVertices()}, {"faces", input.mesh.nFaces()}, {"area", intrinsic::totalArea(input)}}},
+      {"output_mesh", {{"vertices", vertices}, {"faces", faces}}},
+      {"total_area", area},
+      {"components", parts}};
 }
 
 }  // namespace conformesh::refine

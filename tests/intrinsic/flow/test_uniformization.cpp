@@ -29,6 +29,7 @@
 #include "conformesh/intrinsic/flow/uniformization.h"
 
 #include "support/flat_torus_modulus.h"
+#include "support/gauss_bonnet_bound.h"
 #include "support/scratch_dir.h"
 #include "support/test_meshes.h"
 
@@ -695,3 +696,70 @@ TEST_CASE(
   }
 }
 
+namespace {
+
+// Disjoint surfaces side by side in one file's data, written out here (not by the code under test).
+MeshData joinSurfaces(const std::vector<MeshData>& parts) {
+  MeshData out;
+  for (const MeshData& p : parts) {
+    for (const auto& f : p.faces)
+      out.faces.push_back({f[0] + out.nVertices, f[1] + out.nVertices, f[2] + out.nVertices});
+    out.positions.insert(out.positions.end(), p.positions.begin(), p.positions.end());
+    out.nVertices += p.nVertices;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("uniformizeComponents: a sphere, a torus and a genus-2 surface in one mesh, each to its own target") {
+  TorusOptions torus;
+  torus.n = 20;
+  torus.m = 8;
+  GenusSurfaceOptions genus2;
+  genus2.resolution = 2;
+  const IntrinsicTriangulation input =
+      toTriangulation(joinSurfaces({makeIcosphere({2, 1.0}), makeTorus(torus), makeGenusSurface(genus2)}));
+  REQUIRE_THROWS_AS(uniformize(input), conformesh::InputError);
+  const ComponentUniformization cu = uniformizeComponents(input);
+  REQUIRE(cu.parts.size() == 3);
+  struct Want {
+    UniformizationTarget target;
+    Background background;
+    int chi;
+    double area;  // Gauss–Bonnet with constant K and no deficits: K·A = 2πχ; the flat torus is scaled to area 1
+  };
+  const Want want[] = {{UniformizationTarget::Sphere, Background::Spherical, 2, 4 * M_PI},
+                       {UniformizationTarget::FlatTorus, Background::Euclidean, 0, 1.0},
+                       {UniformizationTarget::Hyperbolic, Background::Hyperbolic, -2, 4 * M_PI}};
+  for (int i = 0; i < 3; ++i) {
+    const Uniformization& u = cu.parts[i];
+    INFO("component " << i);
+    CHECK(u.report.target == want[i].target);
+    CHECK(u.uniform.background == want[i].background);
+    CHECK(cu.components[i].topology.eulerCharacteristic == want[i].chi);
+    CHECK(u.uniform.mesh.nVertices() == static_cast<int>(cu.components[i].vertices.size()));
+    CHECK(maxInteriorAngleError(u.uniform) < 1e-10);
+    const CurvatureTotals t = curvatureTotals(u.uniform);
+    CHECK(t.eulerCharacteristic == want[i].chi);
+    // 2πχ of the component alone, to the round-off of its own faces.
+    CHECK(std::abs(t.gaussBonnetResidual) < conformesh::testing::gaussBonnetRoundoff(u.uniform.mesh.nFaces()));
+    CHECK(totalArea(u.uniform) == Approx(want[i].area).epsilon(1e-9));
+  }
+}
+
+TEST_CASE("uniformizeComponents: a failing component is named by index, size and topology") {
+  const IntrinsicTriangulation input =
+      toTriangulation(joinSurfaces({makeIcosphere({1, 1.0}), makeIcosphere({0, 1.0})}));
+  const ComponentFlow failSecond = [](const IntrinsicTriangulation& t, const UniformizationOptions& o) {
+    if (t.mesh.nVertices() == 12) throw conformesh::ConvergenceError("did not converge");
+    return uniformize(t, o);
+  };
+  try {
+    uniformizeComponents(input, {}, failSecond);
+    FAIL("no error");
+  } catch (const conformesh::ConvergenceError& e) {
+    CHECK(std::string(e.what()) ==
+          "uniformize: component 1 of 2 (12 vertices, 20 faces, genus 0, 0 boundary loops): did not converge");
+  }
+}

@@ -30,6 +30,7 @@
 #include "conformesh/intrinsic/mesh/halfedge_mesh.h"
 #include "conformesh/intrinsic/mesh/intrinsic_flips.h"
 #include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
+#include "conformesh/intrinsic/mesh/mesh_components.h"
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/intrinsic/mesh/mesh_generators.h"
 #include "conformesh/intrinsic/mesh/mesh_repair.h"

@@ -11,6 +11,7 @@
 #include "conformesh/refine/delaunay/vertex_relocation.h"
 #include "conformesh/refine/delaunay/vertex_removal.h"
 #include "conformesh/refine/delaunay/vertex_smoothing.h"
+#include "conformesh/refine/pipeline/component_remesh.h"
 #include "conformesh/refine/pipeline/convergence_study.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"

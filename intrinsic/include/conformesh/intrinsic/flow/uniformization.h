@@ -20,6 +20,7 @@
 #include "conformesh/intrinsic/flow/planar_layout.h"
 #include "conformesh/intrinsic/flow/ricci_flow.h"
 #include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
+#include "conformesh/intrinsic/mesh/mesh_components.h"
 
 namespace conformesh::intrinsic {
 
@@ -84,11 +85,28 @@ struct Uniformization {
 };
 
 // Uniformizes `input` (any background: its Penner lengths are its chords). Throws InputError for invalid options
-// (options.validate()), more than one connected component or invalid lengths; ConvergenceError (with the residual
-// reached) when a flow does not converge, when a circle domain's layout does not reproduce a loop's circle (three or
-// more loops; an annulus falls back to the flat cylinder), or when a flat cylinder's two ends differ in length
-// (docs/ricci_flow.md §3.3).
+// (options.validate()), more than one connected component (uniformizeComponents below takes those) or invalid lengths;
+// ConvergenceError (with the residual reached) when a flow does not converge, when a circle domain's layout does not
+// reproduce a loop's circle (three or more loops; an annulus falls back to the flat cylinder), or when a flat
+// cylinder's two ends differ in length (docs/ricci_flow.md §3.3).
 Uniformization uniformize(const IntrinsicTriangulation& input, const UniformizationOptions& options = {});
+
+// A surface of several connected components, each uniformized to its own target by its own topology (the targets
+// above), in splitComponents' order.
+struct ComponentUniformization {
+  std::vector<MeshComponent> components;  // the input's components, with their maps back to its vertices and faces
+  std::vector<Uniformization> parts;      // parts[i]: components[i] uniformized (its own vertex numbering)
+  double seconds = 0;                     // the whole call
+};
+
+// Splits `input` (splitComponents) and runs `flow` (empty: uniformize with `options`) on each component, its progress
+// lines prefixed "component i/N: ". A connected input gives one part, the same as uniformize(input, options). Throws
+// what the flow throws (InputError, ConvergenceError), the message prefixed "uniformize: " and describeComponent()
+// of the failing component, e.g. "uniformize: component 3 of 26 (40 vertices, 76 faces, genus 0, 0 boundary loops):
+// …"; invalid options or lengths are refused before any component runs.
+using ComponentFlow = std::function<Uniformization(const IntrinsicTriangulation&, const UniformizationOptions&)>;
+ComponentUniformization uniformizeComponents(const IntrinsicTriangulation& input,
+                                             const UniformizationOptions& options = {}, const ComponentFlow& flow = {});
 
 // The worst |angle sum − 2π| over the interior vertices of `tri` (radians, in its own background geometry): the
 // check a reader of T0* can redo from the written lengths (0 for a surface with no interior vertex).

@@ -9,6 +9,12 @@
 
 namespace conformesh::intrinsic {
 
+// The figures of one component of a surface of several (its topology is in MeshSummary::components).
+struct ComponentFigures {
+  double area = 0;
+  CurvatureTotals curvature;  // of the component alone: its Gauss–Bonnet residual against 2πχ of the component
+};
+
 struct MeshSummary {
   Background background = Background::Euclidean;
   int vertices = 0, edges = 0, faces = 0;
@@ -23,6 +29,8 @@ struct MeshSummary {
   double minEdgeLength = 0, maxEdgeLength = 0;
   int nonDelaunayEdges = 0;        // interior edges with delaunayMargin < −DelaunayOptions::tolerance
   double nonDelaunayFraction = 0;  // of interior edges
+  // Per component, in `components`' order, when there are several (splitComponents); empty for a connected surface.
+  std::vector<ComponentFigures> componentFigures;
 };
 
 MeshSummary summarize(const IntrinsicTriangulation& tri);

@@ -16,6 +16,7 @@
 #include "conformesh/intrinsic/metric/strahlkorper_io.h"
 #include "conformesh/refine/delaunay/delaunay_refinement.h"
 #include "conformesh/refine/delaunay/refinement_quality.h"
+#include "conformesh/refine/pipeline/component_remesh.h"
 #include "conformesh/refine/pipeline/convergence_study.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
@@ -61,6 +62,12 @@ nlohmann::json meshSummaryJson(const intrinsic::MeshSummary& s);
 // Newton steps, flips, residuals, the worst interior angle sum error, Gauss–Bonnet, area, seconds, and the sphere's
 // puncture figures or the cylinder's height where they apply.
 nlohmann::json uniformizedJson(const intrinsic::Uniformization& u);
+// A component's topology as the component dicts carry it: component (index), vertices, edges, faces, boundary_loops,
+// euler_characteristic, genus.
+nlohmann::json componentTopologyJson(int index, const intrinsic::ComponentTopology& t);
+// The dict of `uniformize --json` for several components: component_count, total_area (the sum), seconds, and
+// components, one uniformizedJson per component with its componentTopologyJson and target_curvature (+1, 0, −1).
+nlohmann::json componentUniformizationJson(const intrinsic::ComponentUniformization& u);
 
 // The mesh against its smooth metric (smooth_reference.h): mesh_area, smooth_area (with smooth_area_error_estimate), area_relative_difference,
 // mesh_total_curvature, smooth_total_curvature, total_curvature_difference, total_curvature_relative_difference (null
@@ -105,5 +112,11 @@ nlohmann::json metricRemeshJson(const RemeshResult& r, const intrinsic::SmoothMe
 // `input` is the triangulation remeshMesh was given, `source` the name of its file (the "input" key).
 nlohmann::json meshRemeshJson(const MeshRemeshResult& r, const intrinsic::IntrinsicTriangulation& input,
                               const std::string& source, const MeshRemeshOptions& options);
+// The dict of `remesh MESHFILE --json` for several components: input, eps, refine_in, component_count, input_mesh
+// (vertices, faces, area of the whole input), output_mesh (vertices, faces), total_area (the sum of the components'),
+// and components, one meshRemeshJson per component (against its own input component) with its
+// componentTopologyJson.
+nlohmann::json componentRemeshJson(const ComponentRemesh& r, const intrinsic::IntrinsicTriangulation& input,
+                                   const std::string& source, const MeshRemeshOptions& options);
 
 }  // namespace conformesh::refine
