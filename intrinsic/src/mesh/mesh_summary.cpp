@@ -27,6 +27,12 @@ MeshSummary summarize(const IntrinsicTriangulation& tri) {
   const auto [lo, hi] = std::minmax_element(angles.begin(), angles.end());
   s.minCornerAngle = *lo;
   s.maxCornerAngle = *hi;
+  const std::vector<double> sums = angleSums(tri);
+  if (!sums.empty()) {
+    const auto low = std::min_element(sums.begin(), sums.end());
+    s.minAngleSum = *low;
+    s.minAngleSumVertex = static_cast<int>(low - sums.begin());
+  }
   const auto [lmin, lmax] = std::minmax_element(tri.edgeLengths.begin(), tri.edgeLengths.end());
   s.minEdgeLength = *lmin;
   s.maxEdgeLength = *lmax;

@@ -118,6 +118,8 @@ nlohmann::json meshSummaryJson(const intrinsic::MeshSummary& s) {
           {"gauss_bonnet_residual", s.curvature.gaussBonnetResidual},
           {"min_corner_angle_deg", degrees(s.minCornerAngle)},
           {"max_corner_angle_deg", degrees(s.maxCornerAngle)},
+          {"min_angle_sum_deg", degrees(s.minAngleSum)},
+          {"min_angle_sum_vertex", s.minAngleSumVertex},
           {"min_edge_length", s.minEdgeLength},
           {"max_edge_length", s.maxEdgeLength},
           {"non_delaunay_edges", s.nonDelaunayEdges},

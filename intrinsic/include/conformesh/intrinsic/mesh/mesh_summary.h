@@ -1,5 +1,6 @@
 // mesh_summary.h — the intrinsic report of a triangulation that `conformesh info` prints: topology (components, χ,
-// genus, boundary loops), curvature totals and the Gauss–Bonnet residual, angle and length ranges, Delaunay-ness.
+// genus, boundary loops), curvature totals and the Gauss–Bonnet residual, angle, angle-sum and length ranges,
+// Delaunay-ness.
 #pragma once
 
 #include <vector>
@@ -26,6 +27,10 @@ struct MeshSummary {
   CurvatureTotals curvature;
   double totalArea = 0;
   double minCornerAngle = 0, maxCornerAngle = 0;  // radians
+  // The smallest angle sum Σθ at a vertex (radians; interior or boundary) and its vertex: the input's smallest cone
+  // angle, which bounds the smallest angle any triangulation keeping that vertex can reach (docs/cli.md).
+  double minAngleSum = 0;
+  int minAngleSumVertex = -1;
   double minEdgeLength = 0, maxEdgeLength = 0;
   int nonDelaunayEdges = 0;        // interior edges with delaunayMargin < −DelaunayOptions::tolerance
   double nonDelaunayFraction = 0;  // of interior edges
