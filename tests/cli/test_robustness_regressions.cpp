@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -60,6 +61,32 @@ TEST_CASE("remesh hedra.off (default input route): a point moved onto an edge is
   CHECK(j["max_same_face_scaled_error"].get<double>() < 1e-10);
   CHECK(j["max_same_face_length_error"].get<double>() <= 3e-11);
   CHECK(j["inverted_triangles"] == 0);
+}
+
+// Before the fix, a new point within 1e-9 (barycentric) of an edge was moved onto it, but one a little farther went
+// inside and made a sliver whose lengths fix its apex only to ~2.2e-16/b of its size: hedra.off had a point at
+// b = 6.9e-9 and an output edge 1.63e-9 (relative to its face) off its located ends at --eps-rel 0.05, 1.89e-9 at
+// 0.01; 3torus.off 1.08e-9 at 0.05 and 1.02e-9 at 0.1: exit 3 on the default route. Points within 1e-3 of an edge now
+// go on the edge (refiner_insertion.cpp, kEdgeSnap): measured ≤ 2.1e-14 on all four; 1e-12 leaves room for
+// another machine's round-off and is still 1000 times below the verification's 1e-9.
+TEST_CASE("remesh hedra.off, 3torus.off (default input route): no sliver from a point next to an edge") {
+  const std::pair<const char*, const char*> runs[] = {
+      {"hedra.off", "0.05"}, {"hedra.off", "0.01"}, {"3torus.off", "0.05"}, {"3torus.off", "0.1"}};
+  for (const auto& [name, eps] : runs) {
+    INFO(name << " --eps-rel " << eps);
+    const fs::path out = conformesh::testing::scratchDir() / (std::string(name) + "_sliver.ply");
+    const auto r = runConformesh("-q remesh " + mesh(name) + " --eps-rel " + eps + " --no-check --json -o " +
+                                 out.string());
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["refine_in"] == "input");
+    CHECK(j["verification"]["passed"] == true);
+    CHECK(j["max_same_face_scaled_error"].get<double>() < 1e-12);
+    CHECK(j["inverted_triangles"] == 0);
+    // Ruppert's bound at B = √2 (both inputs' smallest angle sums are far above it).
+    CHECK(j["quality"]["min_angle_deg"].get<double>() >= std::asin(1 / (2 * std::sqrt(2.0))) * 180 / M_PI);
+  }
 }
 
 // The uniformized route's outputs on these files differ in area from the input (up to 1.2e-3 relative; the output

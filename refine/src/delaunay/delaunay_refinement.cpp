@@ -258,6 +258,9 @@ void Refiner::processFace(int f) {
   if (hasBoundary_ && opt_.segmentRule == SegmentRule::Ruppert && splitSegmentsEncroachedBy(f, x.trace)) return;
   countInsertionKind(b, offCenter, x.frontal);
   insertAt(x.trace, x.arrival);
+  // insertAt may move the point onto an edge (by up to 1e-3 of the containing face's height); should the bad face
+  // survive that, it is examined again rather than left in the output.
+  pushFace(f);
 }
 
 BadFace Refiner::examineFace(int f) const {

@@ -21,6 +21,9 @@ using intrinsic::kInvalid;
 
 namespace {
 
+// The barycentric distance from an edge below which a new point is inserted on the edge (Refiner::insertAt).
+constexpr double kEdgeSnap = 1e-3;
+
 // Angle difference reduced to (−π, π].
 double wrapPi(double a) {
   a = std::remainder(a, 2 * M_PI);
@@ -263,16 +266,20 @@ void Refiner::insertOnEdge(const TraceResult& trace, int j) {
 void Refiner::insertAt(const TraceResult& trace, const InputSurface::Arrival& arr) {
   const std::array<Vec3, 3>& P = trace.corners;
   const Vec3& t = trace.end;
-  // A point within 1e-9 (relative, in barycentric terms) of an edge would give a sliver whose lengths may violate the
-  // triangle inequality after rounding; it is inserted on the edge instead, moving it by at most ~1e-9 of the face's
-  // size.
+  // A point within kEdgeSnap (barycentric) of an edge is inserted on the edge instead, moving it by at most kEdgeSnap
+  // of the face's height. Inside, it would make a sliver of height h = b·H whose lengths fix its apex only to
+  // ~u·L²/h (u = 2.2e-16, L its longest side): every layout of the sliver (the Lawson flip that follows at once, the
+  // corner angles its signposts are turned by) is off by ~u·L/b relative, and so are the lengths and located places
+  // built from it. With the old threshold 1e-9, hedra.off at --eps-rel 0.05 had a point at b = 6.9e-9 and an output
+  // edge 1.63e-9 (relative to its face) off its located ends; 3torus.off 1.08e-9 (exit 3). At 1e-3 both are ≤ 2e-14,
+  // and the moved point stays far inside the bad triangle's circumcircle (processFace re-queues the face regardless).
   int j = 0;
   for (int k = 1; k < 3; ++k)
     if (trace.bary[k] < trace.bary[j]) j = k;
   std::array<double, 3> d{model_.distance(t, P[0]), model_.distance(t, P[1]), model_.distance(t, P[2])};
   const IntrinsicTriangulation& T = tri_;
   const int f = trace.face;
-  bool valid = trace.bary[j] > 1e-9;
+  bool valid = trace.bary[j] > kEdgeSnap;
   for (int k = 0; k < 3 && valid; ++k)
     valid = intrinsic::isValidTriangle(T.background, T.length(3 * f + k), d[k], d[(k + 1) % 3]);
   if (!valid) {
