@@ -75,8 +75,8 @@ TEST_CASE("remesh hedra.off, 3torus.off (default input route): no sliver from a 
   for (const auto& [name, eps] : runs) {
     INFO(name << " --eps-rel " << eps);
     const fs::path out = conformesh::testing::scratchDir() / (std::string(name) + "_sliver.ply");
-    const auto r = runConformesh("-q remesh " + mesh(name) + " --eps-rel " + eps + " --no-check --json -o " +
-                                 out.string());
+    const auto r =
+        runConformesh("-q remesh " + mesh(name) + " --eps-rel " + eps + " --no-check --json -o " + out.string());
     INFO(r.err);
     REQUIRE(r.status == 0);
     const auto j = nlohmann::json::parse(r.out);

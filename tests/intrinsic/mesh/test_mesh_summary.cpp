@@ -45,8 +45,8 @@ TEST_CASE("real meshes of genus 0-3 and with boundaries: topology and Gauss–Bo
 }
 
 TEST_CASE("the smallest angle sum: the corner (1,0,0) of the reference tetrahedron, 45 + 45 + 60 deg") {
-  // Vertices e2, e1, 0, e3 in the file: the origin has three right angles (270 deg); each e_i has two 45 deg corners of its right
-  // isosceles faces and one 60 deg corner of the equilateral face, 150 deg = 5π/6.
+  // Vertices e2, e1, 0, e3 in the file: the origin has three right angles (270 deg); each e_i has two 45 deg corners of
+  // its right isosceles faces and one 60 deg corner of the equilateral face, 150 deg = 5π/6.
   const MeshSummary s =
       summarize(toTriangulation(readMesh(std::string(CONFORMESH_TEST_DATA_DIR) + "/reference_tetrahedron.off")));
   CHECK(s.minAngleSum == Approx(5 * M_PI / 6).margin(1e-12));
