@@ -72,9 +72,13 @@ def remesh_row(exe, path, out, eps_rel, limit, route, check):
     status, dt, j, err = run(cmd, limit)
     detail, figures = err, {}
     if j and status in (0, 3):
-        q = j.get("quality", {})
-        figures = {"vertices": q.get("vertices", 0), "min_angle": q.get("min_angle_deg", 0),
-                   "inverted": j.get("inverted_triangles", 0), "gauss_bonnet": q.get("gauss_bonnet_residual", 0),
+        # A file of several components reports each under "components" (docs/cli.md): the worst of them counts.
+        parts = j.get("components") or [j]
+        qs = [c.get("quality", {}) for c in parts]
+        figures = {"vertices": j.get("output_mesh", {}).get("vertices", sum(q.get("vertices", 0) for q in qs)),
+                   "min_angle": min(q.get("min_angle_deg", 0) for q in qs),
+                   "inverted": sum(c.get("inverted_triangles", 0) for c in parts),
+                   "gauss_bonnet": max((q.get("gauss_bonnet_residual", 0) for q in qs), key=abs),
                    "area": j.get("total_area"), "input_area": j.get("input_mesh", {}).get("area")}
         detail = "%d vertices, min angle %.2f deg" % (figures["vertices"], figures["min_angle"])
         if status == 0 and route == DEFAULT_ROUTE:

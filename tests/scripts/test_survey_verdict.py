@@ -1,8 +1,8 @@
 """test_survey_verdict.py SOURCE_DIR CONFORMESH DATA_DIR — scripts/survey_cgal.py's verdict on the default route
 (docs/robustness.md's summary): an exit 0 counts as ok only with its smallest angle >= min(20.7 deg, the input's
 smallest angle sum), no inversion, Gauss-Bonnet and the input's area, also in the file read back; exit 1 is a refusal
-only where info refuses the file too. Synthetic rows first, then the script itself on two files (hedra.off, ok;
-degtri_sliding.off, refused). Standard library only; exit status 1 on any failure."""
+only where info refuses the file too. Synthetic rows first, then the script itself on three files (hedra.off and
+blobby_3cc.off, three components reported one by one: ok; degtri_sliding.off: refused). Standard library only; exit status 1 on any failure."""
 import os
 import subprocess
 import sys
@@ -49,11 +49,11 @@ expect("timeout", survey_cgal.default_outcome(row("timeout")), "failed")
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "robustness.md")
     p = subprocess.run([sys.executable, os.path.join(source, "scripts", "survey_cgal.py"), conformesh, "--data", data,
-                        "--only", "hedra", "degtri_sliding", "--no-check", "-o", out],
+                        "--only", "hedra", "blobby_3cc", "degtri_sliding", "--no-check", "-o", out],
                        capture_output=True, text=True, timeout=120)
     expect("survey exit status", p.returncode, 0)
     text = open(out).read() if os.path.exists(out) else ""
-    want = ("Default route (`conformesh remesh MESH`), 2 files: **ok 1** (exit 0, verified, angle bound met), "
+    want = ("Default route (`conformesh remesh MESH`), 3 files: **ok 2** (exit 0, verified, angle bound met), "
             "**refused 1** (exit 1 on input that info refuses too), **failed 0**.")
     if want not in text:
         failures.append("survey summary: %r not in\n%s" % (want, text[:2000]))
