@@ -1,5 +1,5 @@
 // test_meshes.h — tiny closed-form meshes for the core tests (icosahedron, torus and planar grids, a one-vertex torus
-// Δ-complex, a flat cylinder), built here rather than by the library's generators so that the core is tested
+// Δ-complex, a flat cylinder, disjoint surfaces joined in one file), built here rather than by the library's generators so that the core is tested
 // independently of them; and the split of a real mesh file into its connected components.
 #pragma once
 
@@ -133,6 +133,18 @@ inline std::vector<MeshData> connectedComponents(const MeshData& d) {
       out.back().source = d.source + " (component " + std::to_string(it->second) + ")";
     }
     out[it->second].faces.push_back(f);
+  }
+  return out;
+}
+
+// Disjoint surfaces side by side in one file's data (vertex indices offset), written out here rather than by the
+// library's concatenateMeshData, which the component tests check against it.
+inline MeshData joinByHand(const std::vector<MeshData>& parts) {
+  MeshData out;
+  for (const MeshData& p : parts) {
+    for (const auto& f : p.faces) out.faces.push_back({f[0] + out.nVertices, f[1] + out.nVertices, f[2] + out.nVertices});
+    out.positions.insert(out.positions.end(), p.positions.begin(), p.positions.end());
+    out.nVertices += p.nVertices;
   }
   return out;
 }

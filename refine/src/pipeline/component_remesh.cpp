@@ -87,17 +87,4 @@ OutputVerification verifyComponentRemesh(const ComponentRemesh& result, const Ve
   }
   return out;
 }
-
-intrinsic::VtkMesh componentsVtkMesh(const intrinsic::MeshData& merged) {
-  if (merged.positions.empty())
-    throw InputError(merged.source + ": a metric-only input has no positions to draw; VTK output needs positions");
-  intrinsic::VtkMesh vtk;
-  vtk.title = "conformesh remesh: " + merged.source;
-  vtk.points = merged.positions;
-  vtk.triangles = merged.faces;
-  for (const auto& [name, values] : merged.vertexProperties)
-    if (name.rfind("input_", 0) != 0) vtk.pointFields[name] = values;
-  return vtk;
-}
-
 }  // namespace conformesh::refine

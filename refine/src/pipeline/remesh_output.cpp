@@ -1,11 +1,12 @@
 // remesh_output.cpp — both pipelines' results, and a refinement's, as file data: MeshData for PLY/OFF/OBJ (faces, edge
 // lengths, per-vertex properties, comments naming the source and ε) and VtkMesh for ParaView. Declared in
-// metric_remesh.h, mesh_remesh.h and refinement_output.h; reads results only.
+// metric_remesh.h, mesh_remesh.h, component_remesh.h and refinement_output.h; reads results only.
 #include <cstdio>
 #include <string>
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh/curvature.h"
+#include "conformesh/refine/pipeline/component_remesh.h"
 #include "conformesh/refine/pipeline/mesh_remesh.h"
 #include "conformesh/refine/pipeline/metric_remesh.h"
 #include "conformesh/refine/pipeline/refinement_output.h"
@@ -119,16 +120,30 @@ MeshData toMeshData(const MeshRemeshResult& r, const std::string& source, double
   return d;
 }
 
-VtkMesh toVtkMesh(const MeshData& data, const MeshRemeshResult& r) {
-  if (r.positions.empty())
+namespace {
+
+// A mesh input's output for ParaView: its triangles at the given positions with every per-vertex field but the
+// input_* locations (which index the input, not points to draw).
+VtkMesh meshInputVtk(const MeshData& data, const std::vector<Eigen::Vector3d>& positions) {
+  if (positions.empty())
     throw InputError(data.source + ": a metric-only input has no positions to draw; VTK output needs positions");
   VtkMesh vtk;
   vtk.title = "conformesh remesh: " + data.source;
-  vtk.points = r.positions;
+  vtk.points = positions;
   vtk.triangles = data.faces;
   for (const auto& [name, values] : data.vertexProperties)
     if (name.rfind("input_", 0) != 0) vtk.pointFields[name] = values;
   return vtk;
+}
+
+}  // namespace
+
+VtkMesh toVtkMesh(const MeshData& data, const MeshRemeshResult& r) {
+  return meshInputVtk(data, r.positions);
+}
+
+VtkMesh componentsVtkMesh(const MeshData& merged) {
+  return meshInputVtk(merged, merged.positions);
 }
 
 }  // namespace conformesh::refine

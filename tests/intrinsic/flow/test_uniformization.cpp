@@ -696,22 +696,6 @@ TEST_CASE(
   }
 }
 
-namespace {
-
-// Disjoint surfaces side by side in one file's data, written out here (not by the code under test).
-MeshData joinSurfaces(const std::vector<MeshData>& parts) {
-  MeshData out;
-  for (const MeshData& p : parts) {
-    for (const auto& f : p.faces)
-      out.faces.push_back({f[0] + out.nVertices, f[1] + out.nVertices, f[2] + out.nVertices});
-    out.positions.insert(out.positions.end(), p.positions.begin(), p.positions.end());
-    out.nVertices += p.nVertices;
-  }
-  return out;
-}
-
-}  // namespace
-
 TEST_CASE("uniformizeComponents: a sphere, a torus and a genus-2 surface in one mesh, each to its own target") {
   TorusOptions torus;
   torus.n = 20;
@@ -719,7 +703,7 @@ TEST_CASE("uniformizeComponents: a sphere, a torus and a genus-2 surface in one 
   GenusSurfaceOptions genus2;
   genus2.resolution = 2;
   const IntrinsicTriangulation input =
-      toTriangulation(joinSurfaces({makeIcosphere({2, 1.0}), makeTorus(torus), makeGenusSurface(genus2)}));
+      toTriangulation(conformesh::testing::joinByHand({makeIcosphere({2, 1.0}), makeTorus(torus), makeGenusSurface(genus2)}));
   REQUIRE_THROWS_AS(uniformize(input), conformesh::InputError);
   const ComponentUniformization cu = uniformizeComponents(input);
   REQUIRE(cu.parts.size() == 3);
@@ -750,7 +734,7 @@ TEST_CASE("uniformizeComponents: a sphere, a torus and a genus-2 surface in one 
 
 TEST_CASE("uniformizeComponents: a failing component is named by index, size and topology") {
   const IntrinsicTriangulation input =
-      toTriangulation(joinSurfaces({makeIcosphere({1, 1.0}), makeIcosphere({0, 1.0})}));
+      toTriangulation(conformesh::testing::joinByHand({makeIcosphere({1, 1.0}), makeIcosphere({0, 1.0})}));
   const ComponentFlow failSecond = [](const IntrinsicTriangulation& t, const UniformizationOptions& o) {
     if (t.mesh.nVertices() == 12) throw conformesh::ConvergenceError("did not converge");
     return uniformize(t, o);

@@ -13,23 +13,13 @@
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/mesh_components.h"
 #include "conformesh/intrinsic/mesh/mesh_generators.h"
+#include "support/test_meshes.h"
 
 using namespace conformesh::intrinsic;
+using conformesh::testing::joinByHand;
 using conformesh::InputError;
 
 namespace {
-
-// The parts side by side in one file's data, written out here (not by concatenateMeshData, which is under test).
-MeshData joinByHand(const std::vector<MeshData>& parts) {
-  MeshData out;
-  for (const MeshData& p : parts) {
-    for (const auto& f : p.faces)
-      out.faces.push_back({f[0] + out.nVertices, f[1] + out.nVertices, f[2] + out.nVertices});
-    out.positions.insert(out.positions.end(), p.positions.begin(), p.positions.end());
-    out.nVertices += p.nVertices;
-  }
-  return out;
-}
 
 std::vector<MeshData> threeSurfaces() {
   TorusOptions torus;

@@ -14,6 +14,7 @@
 #include "conformesh/refine/pipeline/component_remesh.h"
 
 #include "support/gauss_bonnet_bound.h"
+#include "support/test_meshes.h"
 
 using namespace conformesh::intrinsic;
 using namespace conformesh::refine;
@@ -25,14 +26,7 @@ MeshData sphereAndTorus() {
   TorusOptions torus;
   torus.n = 20;
   torus.m = 8;
-  MeshData out;
-  for (const MeshData& p : {makeIcosphere({2, 1.0}), makeTorus(torus)}) {
-    for (const auto& f : p.faces)
-      out.faces.push_back({f[0] + out.nVertices, f[1] + out.nVertices, f[2] + out.nVertices});
-    out.positions.insert(out.positions.end(), p.positions.begin(), p.positions.end());
-    out.nVertices += p.nVertices;
-  }
-  return out;
+  return conformesh::testing::joinByHand({makeIcosphere({2, 1.0}), makeTorus(torus)});
 }
 
 }  // namespace
