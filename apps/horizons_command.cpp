@@ -121,7 +121,7 @@ int run(const HorizonsArgs& a) {
   return 0;
 }
 
-struct GenerateArgs {
+struct HorizonSeriesArgs {
   std::string dir, hdf5;
   bool sampled = false;
   int steps = 10, lMax = 16;
@@ -130,7 +130,7 @@ struct GenerateArgs {
 
 void registerGenerateSeries(CLI::App& app) {
   CLI::App* gen = app.get_subcommand("generate");
-  auto g = std::make_shared<GenerateArgs>();
+  auto g = std::make_shared<HorizonSeriesArgs>();
   CLI::App* sub = gen->add_subcommand("horizon-series",
                                       "Kerr-Schild horizon shape files with a slowly changing spin, for `horizons`");
   sub->footer("Writes DIR/t<time>.json: the horizon r = r+ of Kerr-Schild coordinates, the spheroid with semi-axes\n"

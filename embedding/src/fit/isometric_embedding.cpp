@@ -85,12 +85,12 @@ void validateInput(const IntrinsicTriangulation& tri, const EmbeddingOptions& op
 // not after 100 iterations). Adding the diagonal cd of each edge ab's diamond (a, b, c, d), at its length in the
 // two triangles' planar unfolding, gives paths a direction every 30° instead of 60° and cuts that error by about
 // four. A non-convex diamond's diagonal runs outside it: it is skipped (its length would undercut the geodesic).
-struct Graph {
+struct DistanceGraph {
   std::vector<int> offset, target;
   std::vector<double> weight;
 };
 
-Graph buildGraph(const IntrinsicTriangulation& tri) {
+DistanceGraph buildGraph(const IntrinsicTriangulation& tri) {
   const auto& m = tri.mesh;
   const auto bg = intrinsic::Background::Euclidean;
   std::vector<std::array<int, 2>> pairs;
@@ -117,7 +117,7 @@ Graph buildGraph(const IntrinsicTriangulation& tri) {
     pairs.push_back({c, d});
     lengths.push_back(intrinsic::thirdSide(bg, ca, ad, atA));
   }
-  Graph g;
+  DistanceGraph g;
   g.offset.assign(m.nVertices() + 1, 0);
   for (const auto& [p, q] : pairs) {
     ++g.offset[p + 1];
@@ -137,7 +137,7 @@ Graph buildGraph(const IntrinsicTriangulation& tri) {
   return g;
 }
 
-std::vector<double> dijkstra(const Graph& g, int source) {
+std::vector<double> dijkstra(const DistanceGraph& g, int source) {
   const int n = static_cast<int>(g.offset.size()) - 1;
   std::vector<double> d(n, std::numeric_limits<double>::infinity());
   using Item = std::pair<double, int>;
@@ -346,7 +346,7 @@ std::vector<double> relativeEdgeResiduals(const IntrinsicTriangulation& tri,
 
 std::vector<Eigen::Vector3d> landmarkMdsStart(const IntrinsicTriangulation& tri, int landmarks) {
   const int n = tri.mesh.nVertices();
-  const Graph graph = buildGraph(tri);
+  const DistanceGraph graph = buildGraph(tri);
   const int k = std::max(4, std::min(landmarks, n));
   // Farthest-point landmarks: each new one maximizes the graph distance to those chosen, so they spread evenly.
   std::vector<int> marks;

@@ -16,9 +16,9 @@ namespace {
 using hdf5_detail::Id;
 
 // Cap before allocating: 512³ nodes × 6 components × 8 bytes = 6.4 GB is beyond any horizon's neighbourhood.
-constexpr double kMaxNodes = 512.0 * 512 * 512;
+constexpr double kMaxGridNodes = 512.0 * 512 * 512;
 
-std::string lower(std::string s) {
+std::string lowerCase(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
 }
@@ -44,7 +44,7 @@ std::array<std::string, 6> componentDatasets(hid_t group, const std::string& whe
     const std::string prefix = "admbase::" + adm[c];
     std::vector<std::string> hits;
     for (const auto& l : links) {
-      const std::string s = lower(l);
+      const std::string s = lowerCase(l);
       if (s.compare(0, prefix.size(), prefix) == 0 && (s.size() == prefix.size() || s[prefix.size()] == ' '))
         hits.push_back(l);
     }
@@ -94,7 +94,7 @@ ComponentData readComponent(hid_t group, const std::string& name, const std::str
   if (rank != 3) throw InputError(at + " must be 3-D with shape (nz, ny, nx), found rank " + std::to_string(rank));
   ComponentData out;
   H5Sget_simple_extent_dims(space.get(), out.dims, nullptr);
-  if (static_cast<double>(out.dims[0]) * out.dims[1] * out.dims[2] > kMaxNodes)
+  if (static_cast<double>(out.dims[0]) * out.dims[1] * out.dims[2] > kMaxGridNodes)
     throw InputError(at + " has more than 512^3 nodes");
   out.values.resize(out.dims[0] * out.dims[1] * out.dims[2]);
   if (!out.values.empty() && H5Dread(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.values.data()) < 0)
