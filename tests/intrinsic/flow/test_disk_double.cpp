@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <Eigen/Geometry>
+
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/mesh/mesh_components.h"
@@ -110,5 +112,24 @@ TEST_CASE("the doubles of CGAL's disks whose circle-domain flow fails are unifor
     CHECK(s.report.maxResidual < 1e-10);
     CHECK(sym.lambda < 1e-8);
     CHECK(sym.greatCircle < 1e-8);
+    // Stereographic projection from the mirror pole: z = x⊥/(1 + x·n), the boundary onto |z| = 1. The disk's own
+    // faces, straight-line at z: measured how many fold (docs/ricci_flow.md §3.3, "The double").
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for (int v = 0; v < disk.mesh.nVertices(); ++v) n += s.positions[v] - s.positions[d.mirror[v]];
+    n.normalize();
+    const Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+    std::vector<Eigen::Vector2d> z(disk.mesh.nVertices());
+    for (int v = 0; v < disk.mesh.nVertices(); ++v) {
+      const Eigen::Vector3d& x = s.positions[v];
+      z[v] = Eigen::Vector2d(x.dot(e1), x.dot(e2)) / (1 + x.dot(n));
+    }
+    int positive = 0, negative = 0;
+    for (int f = 0; f < disk.mesh.nFaces(); ++f) {
+      const Eigen::Vector2d a = z[disk.mesh.faceVertex(f, 0)], b = z[disk.mesh.faceVertex(f, 1)],
+                            c = z[disk.mesh.faceVertex(f, 2)];
+      const double area = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+      (area > 0 ? positive : negative) += 1;
+    }
+    std::printf("  disk faces straight-line at the projected points: %d positive, %d negative\n", positive, negative);
   }
 }
