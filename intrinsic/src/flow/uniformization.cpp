@@ -15,6 +15,7 @@
 #include "conformesh/intrinsic/flow/discrete_conformal.h"
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/triangle_geometry.h"
+#include "flow/disk_double.h"
 #include "flow/sphere_puncture.h"
 #include "flow/uniformization_support.h"
 
@@ -266,6 +267,25 @@ void inscribeDiskWithoutInterior(DiscreteConformalMetric& metric) {
   }
 }
 
+// u for a disk from the sphere of its double (disk_double.h): the double's total scaling w (λ = −w) plus the factor of
+// the stereographic projection from the mirror pole p onto the equatorial plane, |σx − σy| = 2|x − y|/(|x − p||y − p|)
+// (an inversion of radius √2 centred at p: vertex scaling is Möbius invariant, BPS 2015), so u = w + log 2 − 2 log|x −
+// p|. The pole is −n, n the unit mean of x_v − x_v' over the disk's vertices (the solution is mirror-symmetric).
+void startFromDouble(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                     DiscreteConformalMetric& metric) {
+  const detail::DiskDouble twin = detail::doubleDisk(input);
+  UniformizationOptions quiet = options;
+  if (options.progress) quiet.progress = [&options](const std::string& line) { options.progress("double: " + line); };
+  UniformizationReport sphereReport;
+  const Uniformization sphere = detail::uniformizeSphere(twin.surface, quiet, sphereReport);
+  const int n = input.mesh.nVertices();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  for (int v = 0; v < n; ++v) normal += sphere.positions[v] - sphere.positions[twin.mirror[v]];
+  normal.normalize();
+  for (int v = 0; v < n; ++v)
+    metric.u()[v] = -sphere.lambda[v] + std::log(2.0) - 2 * std::log((sphere.positions[v] + normal).norm());
+}
+
 Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const UniformizationOptions& options,
                                       UniformizationReport report) {
   report.target = UniformizationTarget::CircleDomain;
@@ -311,7 +331,23 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
     inscribeDiskWithoutInterior(metric);
     if (options.progress) options.progress("circle domain: no interior vertex, developed onto its circle");
   }
-  const RicciFlowReport flow = solveConformalFlow(metric, target, withProgress(options, "circle domain"), &log);
+  RicciFlowReport flow;
+  try {
+    flow = solveConformalFlow(metric, target, withProgress(options, "circle domain"), &log);
+  } catch (const ConvergenceError& failed) {
+    if (loopTips.size() != 1 || !interior) throw;
+    // A disk: start again from its double's sphere, projected (docs/ricci_flow.md §3.3, "The double").
+    if (options.progress)
+      options.progress(std::string("circle domain: ") + failed.what() + "; restarting from the double");
+    metric = DiscreteConformalMetric(referencePenner(input), Background::Euclidean);
+    log = FlowCorrespondence(m.nFaces());
+    try {
+      startFromDouble(input, options, metric);
+      flow = solveConformalFlow(metric, target, withProgress(options, "circle domain from the double"), &log);
+    } catch (const ConvergenceError& again) {
+      throw ConvergenceError(std::string(failed.what()) + "; from the double's sphere: " + again.what());
+    }
+  }
   accumulate(report, flow);
   std::vector<double> radius = flow.circleRadii;
   // Scale so that the outer circle is the unit circle: lengths scale by e^{Δu}.

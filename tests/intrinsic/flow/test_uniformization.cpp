@@ -433,6 +433,27 @@ TEST_CASE("disks with no interior vertex in CGAL's boeing.off: on their circle, 
   CHECK(inscribed + refused >= 30);
 }
 
+TEST_CASE("a disk whose circle-domain flow hits the step cap converges from its double's sphere (ALSTOM_TEST4.off)") {
+  // Component 0 of CGAL's ALSTOM_TEST4.off (518 vertices, one loop): the flow from u = 0 reaches 1.17e-4 rad in 100
+  // Newton steps; restarted from the double's spherical solution, projected stereographically (docs/ricci_flow.md
+  // §3.3, "The double"), it converges. Checked: interior angle sums 2π and the flow residual to the tolerance 1e-10,
+  // Gauss–Bonnet with the boundary turning to round-off, the loop on the unit circle to the layout check's 1e-8.
+  const IntrinsicTriangulation disk =
+      splitComponents(toTriangulation(readMesh(dataFile("ALSTOM_TEST4.off"))))[0].triangulation;
+  REQUIRE(disk.mesh.nVertices() == 518);
+  std::vector<std::string> lines;
+  UniformizationOptions options;
+  options.progress = [&lines](const std::string& line) { lines.push_back(line); };
+  const Uniformization out = uniformize(disk, options);
+  CHECK(std::any_of(lines.begin(), lines.end(),
+                    [](const std::string& l) { return l.find("restarting from the double") != std::string::npos; }));
+  CHECK(out.report.maxResidual < 1e-10);
+  CHECK(maxInteriorAngleSumError(out.uniform) < 1e-10);
+  CHECK(std::abs(curvatureTotals(out.uniform).gaussBonnetResidual) < 1e-10);
+  for (int v = 0; v < out.uniform.mesh.nVertices(); ++v)
+    if (out.uniform.mesh.isBoundaryVertex(v)) CHECK(std::abs(out.positions[v].head<2>().norm() - 1) < 1e-8);
+}
+
 TEST_CASE("a thin appendage below double-precision resolution on the unit sphere gets exact Penner-form lengths") {
   // CGAL's cow: the tail's conformal factor is ~10⁻¹⁵, so its vertices coincide as unit vectors; the lengths come from
   // e^{(w_i+w_j)/2} c⁰_ij. The smallest written spherical length shows that the tail is really resolved, and the angle
