@@ -123,7 +123,12 @@ TEST_CASE("remesh lion.off (uniformized): the flow's runaway flip log is refused
                     (conformesh::testing::scratchDir() / "lion.ply").string());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   CHECK(r.status == 1);
-  CHECK(r.err.find("Ptolemy flips") != std::string::npos);
+  // Until the inscribed polygon's radius was right for a loop with a side near its diameter (docs/ricci_flow.md §3.3,
+  // *Sides on the diameter*; lion's 36-edge loop 0 is one), the flow "converged" to wrong targets with 5 031 580 flips
+  // and the pull-back's flip cap refused it ("Ptolemy flips"); with the right targets the flow itself stops at its
+  // step cap (8.2e-10 rad), before the pull-back. Either way: refused in seconds, naming why.
+  CHECK((r.err.find("Ptolemy flips") != std::string::npos ||
+         r.err.find("did not converge in 100 Newton steps") != std::string::npos));
   CHECK(seconds < 30);  // was > 120 s and 1.2 GB
 }
 

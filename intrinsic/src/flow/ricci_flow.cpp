@@ -43,6 +43,10 @@ std::string RicciFlowOptions::validate() const {
   return "";
 }
 
+// ℓ_m/2R above which the longest side's half-angle is computed as the complement of the others (asin's condition
+// number 1/√(1 − x²) exceeds 7 there).
+constexpr double kInscribedNearDiameter = 0.99;
+
 InscribedPolygon inscribedPolygon(const std::vector<double>& sides, int loop) {
   const int n = static_cast<int>(sides.size());
   const int m = static_cast<int>(std::max_element(sides.begin(), sides.end()) - sides.begin());
@@ -69,7 +73,18 @@ InscribedPolygon inscribedPolygon(const std::vector<double>& sides, int loop) {
   InscribedPolygon out;
   out.side.assign(n, 1);
   double df;
-  if (f(0.5 * longest, df) >= 0) {
+  if (f(0.5 * longest, df) >= 0 && !(perimeter / (2 * M_PI) > 0.5 * longest)) {
+    // Newton would start at R = ℓ_max/2, where the longest side's dφ/dR is infinite (f above drops it) and the first
+    // step overshoots the root: the radius of a rectangle's circle came out 12 % too large, so its targets were wrong
+    // by 0.98 rad and the flow stalled. Bisect instead: f ≥ 0 at ℓ_max/2 and < 0 for large R.
+    double lo = 0.5 * longest, hi = 0.5 * perimeter;
+    while (f(hi, df) >= 0) hi *= 2;
+    for (int it = 0; it < 200 && hi - lo > 4e-16 * hi; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (f(mid, df) >= 0 ? lo : hi) = mid;
+    }
+    out.radius = 0.5 * (lo + hi);
+  } else if (f(0.5 * longest, df) >= 0) {
     double R = std::max(perimeter / (2 * M_PI), 0.5 * longest);
     for (int it = 0; it < 100; ++it) {
       const double value = f(R, df);
@@ -98,6 +113,15 @@ InscribedPolygon inscribedPolygon(const std::vector<double>& sides, int loop) {
   for (int j = 0; j < n; ++j) {
     const double a = std::asin(std::min(1.0, sides[j] / (2 * out.radius)));
     out.halfAngle[j] = out.side[j] > 0 ? a : M_PI - a;
+  }
+  // Near a diameter (x = ℓ_m/2R → 1, e.g. a right triangle's hypotenuse) asin amplifies the 10⁻¹⁶ relative error of R
+  // to √ε ≈ 1.5·10⁻⁸ in φ_m, so the targets would miss Σ φ = π by that much and the flow stall there. The other sides
+  // are well conditioned, and Σ φ_j = π holds on both branches, so φ_m is taken as their complement.
+  if (longest / (2 * out.radius) > kInscribedNearDiameter) {
+    double others = 0;
+    for (int j = 0; j < n; ++j)
+      if (j != m) others += out.halfAngle[j];
+    out.halfAngle[m] = M_PI - others;
   }
   return out;
 }

@@ -185,6 +185,23 @@ TEST_CASE("inscribed polygons: regular, and with the centre outside") {
   CHECK_THROWS_WITH(inscribedPolygon({1, 1, 2.5}, 4), Catch::Contains("boundary loop 4"));
 }
 
+TEST_CASE("inscribed polygons with a side on the diameter: rectangles and right triangles") {
+  // Rectangle a × b: its circle has the diagonal as diameter, R = √(a² + b²)/2, and φ = atan(a/b), atan(b/a) (Σ = π).
+  // Here perimeter/2π < ℓ_max/2, so Newton from ℓ_max/2 (infinite dφ/dR) overshot: R came out too large.
+  const InscribedPolygon rectangle = inscribedPolygon({1, 4, 1, 4}, 0);
+  CHECK(rectangle.radius == Approx(std::sqrt(17.0) / 2).epsilon(1e-15));
+  CHECK(rectangle.halfAngle[0] == Approx(std::atan(0.25)).epsilon(1e-15));
+  CHECK(rectangle.halfAngle[1] == Approx(std::atan(4.0)).epsilon(1e-15));
+  // Right triangle (CGAL's tetra_intersected_by_triangle.off, component 1): legs √0.5 and 0.1, hypotenuse √0.51 the
+  // diameter. Its half-angles are the opposite angles; the hypotenuse's is π/2, which asin near 1 resolves only to
+  // √ε ≈ 1.5·10⁻⁸ (the flow stalled there), so it is the complement of the others.
+  const InscribedPolygon right = inscribedPolygon({std::sqrt(0.5), 0.1, std::sqrt(0.51)}, 0);
+  CHECK(right.radius == Approx(std::sqrt(0.51) / 2).epsilon(1e-15));
+  CHECK(std::abs(right.halfAngle[2] - M_PI / 2) < 1e-15);
+  CHECK(std::abs(right.halfAngle[0] - std::atan(std::sqrt(0.5) / 0.1)) < 1e-15);
+  CHECK(std::abs(right.halfAngle[0] + right.halfAngle[1] + right.halfAngle[2] - M_PI) < 1e-15);
+}
+
 TEST_CASE("the Penner Delaunay margin agrees with the angle test on valid triangles") {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> U(0.2, 1.0);

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -331,6 +332,126 @@ TEST_CASE("uniformize reports inputs it cannot handle") {
   UniformizationOptions options;
   options.flow.maxNewtonSteps = 1;
   CHECK_THROWS_WITH(uniformize(torus, options), Catch::Contains("did not converge") && Catch::Contains("max |"));
+}
+
+namespace {
+
+// A triangulated polygon from planar points (faces ccw), Euclidean lengths.
+IntrinsicTriangulation planarPolygon(const std::vector<Eigen::Vector2d>& p, const std::vector<std::array<int, 3>>& f) {
+  IntrinsicTriangulation t;
+  t.mesh = HalfedgeMesh::fromFaces(f, static_cast<int>(p.size()));
+  t.edgeLengths.resize(t.mesh.nEdges());
+  for (int e = 0; e < t.mesh.nEdges(); ++e) {
+    const int h = t.mesh.edgeHalfedge(e);
+    t.edgeLengths[e] = (p[t.mesh.tail(h)] - p[t.mesh.tip(h)]).norm();
+  }
+  return t;
+}
+
+// A disk with no interior vertex uniformized: every vertex on the unit circle about the origin (positions) to
+// `circleBound`; Gauss–Bonnet Σ (π − Θ_v) = 2π and the flow residual to `angleBound`. Exact inputs (`exact`): also
+// each angle sum equal to the inscribed angle of its two neighbours seen from its position (acos of the positions
+// resolves it to ~1e-13), and no Newton step (the direct development of uniformization.cpp).
+void checkInscribed(const Uniformization& out, bool exact, double angleBound, double circleBound) {
+  const IntrinsicTriangulation& t = out.uniform;
+  REQUIRE(out.positions.size() == static_cast<std::size_t>(t.mesh.nVertices()));
+  for (const Eigen::Vector3d& x : out.positions) CHECK(std::abs(x.head<2>().norm() - 1) < circleBound);
+  const std::vector<double> sums = angleSums(t);
+  double turning = 0;
+  const std::vector<std::vector<int>> loops = t.mesh.boundaryLoops();
+  for (int h : loops[0]) {
+    const int v = t.mesh.tip(h), p = t.mesh.tail(h), n = t.mesh.tip(t.mesh.nextBoundaryHalfedge(h));
+    const Eigen::Vector2d a = out.positions[p].head<2>(), b = out.positions[n].head<2>(),
+                          x = out.positions[v].head<2>();
+    const double inscribed = std::acos(std::clamp((a - x).normalized().dot((b - x).normalized()), -1.0, 1.0));
+    if (exact) CHECK(std::abs(sums[v] - inscribed) < 1e-12);
+    turning += M_PI - sums[v];
+  }
+  CHECK(std::abs(turning - 2 * M_PI) < angleBound);
+  CHECK(out.report.maxResidual < angleBound);
+  if (exact) CHECK(out.report.newtonSteps == 0);
+}
+
+}  // namespace
+
+TEST_CASE("disks with no interior vertex: a triangle is its own circle domain, a quad becomes concyclic") {
+  // One right triangle (CGAL's tetra_intersected_by_triangle.off, component 1, in its plane): already inscribed, so
+  // the output is the input scaled by 1/R (λ = log R for every vertex, R = hypotenuse/2), angles unchanged.
+  const IntrinsicTriangulation triangle =
+      planarPolygon({{0, 0}, {std::sqrt(0.5), 0}, {std::sqrt(0.5), 0.1}}, {{{0, 1, 2}}});
+  const Uniformization t = uniformize(triangle);
+  checkInscribed(t, true, 1e-13, 1e-12);
+  for (double lambda : t.lambda) CHECK(std::abs(lambda - std::log(std::sqrt(0.51) / 2)) < 1e-14);
+  // A rectangle 1 × 4 (boeing.off's component 1 is a 0.25 × 1.914 one) is cyclic: scaled by 2/√17.
+  const Uniformization r = uniformize(planarPolygon({{0, 0}, {4, 0}, {4, 1}, {0, 1}}, {{{0, 1, 2}}, {{0, 2, 3}}}));
+  checkInscribed(r, true, 1e-13, 1e-12);
+  for (double lambda : r.lambda) CHECK(std::abs(lambda - std::log(std::sqrt(17.0) / 2)) < 1e-14);
+  // A quad that is not cyclic: vertex scaling keeps the cross-ratio ℓ_ab ℓ_cd / (ℓ_bc ℓ_da) of its boundary, and the
+  // result is cyclic: opposite angles sum to π.
+  const IntrinsicTriangulation kite = planarPolygon({{0, 0}, {2, 0}, {1.5, 1}, {0, 1.2}}, {{{0, 1, 2}}, {{0, 2, 3}}});
+  const Uniformization k = uniformize(kite);
+  checkInscribed(k, true, 1e-13, 1e-12);
+  auto crossRatio = [](const IntrinsicTriangulation& t) {
+    std::map<std::pair<int, int>, double> len;
+    for (int e = 0; e < t.mesh.nEdges(); ++e) {
+      const int h = t.mesh.edgeHalfedge(e), a = t.mesh.tail(h), b = t.mesh.tip(h);
+      len[{std::min(a, b), std::max(a, b)}] = t.edgeLengths[e];
+    }
+    return len[{0, 1}] * len[{2, 3}] / (len[{1, 2}] * len[{0, 3}]);
+  };
+  CHECK(crossRatio(k.uniform) == Approx(crossRatio(kite)).epsilon(1e-14));
+  const std::vector<double> sums = angleSums(k.uniform);
+  CHECK(std::abs(sums[0] + sums[2] - M_PI) < 1e-13);
+  CHECK(std::abs(sums[1] + sums[3] - M_PI) < 1e-13);
+}
+
+TEST_CASE("disks with no interior vertex in CGAL's boeing.off: on their circle, or refused as long strips") {
+  // boeing.off: 122 components; among its disks whose vertices all lie on the boundary (strips of 4 to 51 vertices),
+  // those of 4 and 8 vertices and some of 14 are developed onto their circle (they stalled in the flow before); the
+  // longer strips (aspect ≈ 19: circle-domain chords shrinking by ≈ 30 per segment towards the ends) are refused with
+  // a message saying so, never laid out wrongly.
+  const IntrinsicTriangulation input = toTriangulation(readMesh(dataFile("boeing.off")));
+  int inscribed = 0, refused = 0;
+  for (const MeshComponent& c : splitComponents(input)) {
+    const HalfedgeMesh& m = c.triangulation.mesh;
+    bool interior = false;
+    for (int v = 0; v < m.nVertices(); ++v) interior = interior || !m.isBoundaryVertex(v);
+    if (interior || c.topology.genus != 0 || c.topology.boundaryLoops != 1) continue;
+    try {
+      const Uniformization out = uniformize(c.triangulation);
+      // The development's round-off grows along a strip (≈ ×3 per face from the centre), the flow polishes it (0 to 4
+      // Newton steps): the stated contract, residual below the tolerance 10⁻¹⁰ and circles to 10⁻⁸ (layout check).
+      checkInscribed(out, false, 1e-10, 1e-8);
+      ++inscribed;
+    } catch (const conformesh::ConvergenceError& e) {
+      CHECK_THAT(e.what(), Catch::Contains("a long strip"));
+      CHECK(m.nVertices() >= 14);
+      ++refused;
+    }
+  }
+  CHECK(inscribed >= 15);
+  CHECK(inscribed + refused >= 30);
+}
+
+TEST_CASE("a disk whose circle-domain flow hits the step cap converges from its double's sphere (ALSTOM_TEST4.off)") {
+  // Component 0 of CGAL's ALSTOM_TEST4.off (518 vertices, one loop): the flow from u = 0 reaches 1.17e-4 rad in 100
+  // Newton steps; restarted from the double's spherical solution, projected stereographically (docs/ricci_flow.md
+  // §3.3, "The double"), it converges. Checked: interior angle sums 2π and the flow residual to the tolerance 1e-10,
+  // Gauss–Bonnet with the boundary turning to round-off, the loop on the unit circle to the layout check's 1e-8.
+  const IntrinsicTriangulation disk =
+      splitComponents(toTriangulation(readMesh(dataFile("ALSTOM_TEST4.off"))))[0].triangulation;
+  REQUIRE(disk.mesh.nVertices() == 518);
+  std::vector<std::string> lines;
+  UniformizationOptions options;
+  options.progress = [&lines](const std::string& line) { lines.push_back(line); };
+  const Uniformization out = uniformize(disk, options);
+  CHECK(std::any_of(lines.begin(), lines.end(),
+                    [](const std::string& l) { return l.find("restarting from the double") != std::string::npos; }));
+  CHECK(out.report.maxResidual < 1e-10);
+  CHECK(maxInteriorAngleSumError(out.uniform) < 1e-10);
+  CHECK(std::abs(curvatureTotals(out.uniform).gaussBonnetResidual) < 1e-10);
+  for (int v = 0; v < out.uniform.mesh.nVertices(); ++v)
+    if (out.uniform.mesh.isBoundaryVertex(v)) CHECK(std::abs(out.positions[v].head<2>().norm() - 1) < 1e-8);
 }
 
 TEST_CASE("a thin appendage below double-precision resolution on the unit sphere gets exact Penner-form lengths") {

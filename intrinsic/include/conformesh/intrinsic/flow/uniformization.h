@@ -84,7 +84,9 @@ struct Uniformization {
   UniformizationReport report;
 };
 
-// Uniformizes `input` (any background: its Penner lengths are its chords). Throws InputError for invalid options
+// Uniformizes `input` (any background: its Penner lengths are its chords). A disk whose circle-domain flow fails is
+// restarted once from its double's sphere (docs/ricci_flow.md §3.3, "The double"); a disk without interior vertices is
+// developed onto its circle directly. Throws InputError for invalid options
 // (options.validate()), more than one connected component (uniformizeComponents below takes those) or invalid lengths;
 // ConvergenceError (with the residual reached) when a flow does not converge, when a circle domain's layout does not
 // reproduce a loop's circle (three or more loops; an annulus falls back to the flat cylinder), or when a flat

@@ -1,0 +1,135 @@
+// test_disk_double.cpp — the double of a disk (intrinsic/src/flow/disk_double.h): its combinatorics (closed, genus 0,
+// V = 2V − V_∂, every edge interior, mirror an involution fixing the boundary), and its uniformization to the unit
+// sphere by the closed genus-0 route: reflection symmetry of the solution (mirror vertices' λ agree, the boundary on a
+// great circle) on a regular fan, whose circle domain is known (the centre at the pole, the boundary the equator at
+// equal angles), and on CGAL's blob.off, whose circle-domain flow fails; what the flips do to the two halves.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <Eigen/Geometry>
+
+#include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/mesh/mesh_components.h"
+#include "conformesh/intrinsic/mesh/mesh_data.h"
+#include "conformesh/intrinsic/mesh/mesh_generators.h"
+#include "flow/disk_double.h"
+
+using namespace conformesh::intrinsic;
+using conformesh::intrinsic::detail::DiskDouble;
+using conformesh::intrinsic::detail::doubleDisk;
+
+namespace {
+
+std::string dataFile(const std::string& name) {
+  return std::string(CONFORMESH_TEST_DATA_DIR) + "/" + name;
+}
+
+void checkDoubleCombinatorics(const IntrinsicTriangulation& disk, const DiskDouble& d) {
+  int boundary = 0;
+  for (int v = 0; v < disk.mesh.nVertices(); ++v) boundary += disk.mesh.isBoundaryVertex(v);
+  const HalfedgeMesh& m = d.surface.mesh;
+  CHECK(m.nVertices() == 2 * disk.mesh.nVertices() - boundary);
+  CHECK(m.nFaces() == 2 * disk.mesh.nFaces());
+  CHECK(m.eulerCharacteristic() == 2);
+  for (int e = 0; e < m.nEdges(); ++e) CHECK_FALSE(m.isBoundaryEdge(e));
+  for (int v = 0; v < m.nVertices(); ++v) {
+    CHECK(d.mirror[d.mirror[v]] == v);
+    CHECK((d.mirror[v] == v) == (v < disk.mesh.nVertices() && disk.mesh.isBoundaryVertex(v)));
+  }
+}
+
+// The double's sphere: how symmetric under the mirror (λ, and the boundary's distance from the great circle normal to
+// the centre of mass difference of the two halves), and how many final edges join the two halves' interiors.
+struct Symmetry {
+  double lambda = 0, greatCircle = 0;
+  int crossing = 0;
+};
+
+Symmetry measureSymmetry(const DiskDouble& d, const Uniformization& s, int diskVertices) {
+  Symmetry out;
+  const HalfedgeMesh& m = s.uniform.mesh;
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  for (int v = 0; v < m.nVertices(); ++v) {
+    out.lambda = std::max(out.lambda, std::abs(s.lambda[v] - s.lambda[d.mirror[v]]));
+    if (v < diskVertices) normal += s.positions[v] - s.positions[d.mirror[v]];
+  }
+  normal.normalize();
+  for (int v = 0; v < diskVertices; ++v)
+    if (d.mirror[v] == v) out.greatCircle = std::max(out.greatCircle, std::abs(s.positions[v].dot(normal)));
+  auto side = [&](int v) { return d.mirror[v] == v ? 0 : (v < diskVertices ? 1 : -1); };
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e);
+    if (side(m.tail(h)) * side(m.tip(h)) < 0) ++out.crossing;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the double of a regular fan is a symmetric bipyramid: the boundary on the equator at equal angles") {
+  // makeDisk with one ring: the centre and the regular hexagon, its own circle domain (centre 0, vertices at the
+  // sixth roots of unity up to rotation). The double is the regular hexagonal bipyramid; on the unit sphere, centred,
+  // the poles are the two centres and the hexagon the equator at equal angles.
+  const IntrinsicTriangulation fan = toTriangulation(makeDisk({1, 1.0}));
+  const DiskDouble d = doubleDisk(fan);
+  checkDoubleCombinatorics(fan, d);
+  const Uniformization s = uniformize(d.surface);
+  const Symmetry sym = measureSymmetry(d, s, fan.mesh.nVertices());
+  CHECK(sym.lambda < 1e-10);
+  CHECK(sym.greatCircle < 1e-10);
+  CHECK(sym.crossing == 0);
+  int centre = 0;
+  for (int v = 0; v < fan.mesh.nVertices(); ++v)
+    if (!fan.mesh.isBoundaryVertex(v)) centre = v;
+  CHECK(s.positions[centre].dot(s.positions[d.mirror[centre]]) == Approx(-1).epsilon(1e-10));
+  for (int v = 0; v < fan.mesh.nVertices(); ++v)
+    if (v != centre) CHECK(std::abs(s.positions[v].dot(s.positions[centre])) < 1e-10);
+}
+
+TEST_CASE("the doubles of CGAL's disks whose circle-domain flow fails are uniformized, mirror-symmetric") {
+  // blob.off ends at a degenerate face next to a boundary edge, corner_tris_with_hole.off and corner_with_hole.off
+  // stall (1.2e-6, 1.2e-8 rad), ALSTOM_TEST4.off's component 0 hits the step cap (1.2e-4 rad). The double has no
+  // boundary edge: the sphere's uniqueness up to Möbius maps, with the centring's mirror-symmetric weights, makes the
+  // solution symmetric up to a rotation, so mirror vertices have one λ and the boundary lies on a great circle.
+  for (const char* file : {"blob.off", "corner_tris_with_hole.off", "corner_with_hole.off", "ALSTOM_TEST4.off"}) {
+    CAPTURE(file);
+    const IntrinsicTriangulation disk = splitComponents(toTriangulation(readMesh(dataFile(file))))[0].triangulation;
+    const DiskDouble d = doubleDisk(disk);
+    checkDoubleCombinatorics(disk, d);
+    const auto start = std::chrono::steady_clock::now();
+    const Uniformization s = uniformize(d.surface);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const Symmetry sym = measureSymmetry(d, s, disk.mesh.nVertices());
+    std::printf(
+        "%s double (%d vertices): %d Newton steps, %lld flips, residual %.3g, %.3f s; mirror |dlambda| %.3g, "
+        "boundary off the great circle %.3g, edges joining the halves' interiors %d of %d\n",
+        file, s.uniform.mesh.nVertices(), s.report.newtonSteps, static_cast<long long>(s.report.flips),
+        s.report.maxResidual, seconds, sym.lambda, sym.greatCircle, sym.crossing, s.uniform.mesh.nEdges());
+    CHECK(s.report.maxResidual < 1e-10);
+    CHECK(sym.lambda < 1e-8);
+    CHECK(sym.greatCircle < 1e-8);
+    // Stereographic projection from the mirror pole: z = x⊥/(1 + x·n), the boundary onto |z| = 1. The disk's own
+    // faces, straight-line at z: measured how many fold (docs/ricci_flow.md §3.3, "The double").
+    Eigen::Vector3d n = Eigen::Vector3d::Zero();
+    for (int v = 0; v < disk.mesh.nVertices(); ++v) n += s.positions[v] - s.positions[d.mirror[v]];
+    n.normalize();
+    const Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+    std::vector<Eigen::Vector2d> z(disk.mesh.nVertices());
+    for (int v = 0; v < disk.mesh.nVertices(); ++v) {
+      const Eigen::Vector3d& x = s.positions[v];
+      z[v] = Eigen::Vector2d(x.dot(e1), x.dot(e2)) / (1 + x.dot(n));
+    }
+    int positive = 0, negative = 0;
+    for (int f = 0; f < disk.mesh.nFaces(); ++f) {
+      const Eigen::Vector2d a = z[disk.mesh.faceVertex(f, 0)], b = z[disk.mesh.faceVertex(f, 1)],
+                            c = z[disk.mesh.faceVertex(f, 2)];
+      const double area = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+      (area > 0 ? positive : negative) += 1;
+    }
+    std::printf("  disk faces straight-line at the projected points: %d positive, %d negative\n", positive, negative);
+  }
+}
