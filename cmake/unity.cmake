@@ -5,12 +5,15 @@
 # off. Every source is written to compile both ways: file-local helpers have names unique within their library.
 option(CONFORMESH_UNITY_BUILD "Compile the libraries and the conformesh command as a few combined sources each" OFF)
 
-# conformesh_unity_build(TARGET BATCH): with CONFORMESH_UNITY_BUILD, compile TARGET in batches of BATCH sources. Chosen
-# by measurement on two cores (docs/benchmarks.md): intrinsic's 60 sources in three batches (its Eigen-heavy flow and
-# measure files share most instantiations: four batches cost 20 s more), the others in two, so that the last batches
-# to start — the command's — finish together.
-function(conformesh_unity_build target batch)
+# conformesh_unity_build(TARGET BATCHES): with CONFORMESH_UNITY_BUILD, compile TARGET's sources (those listed when it
+# is called) in BATCHES combined units of equal size. Chosen by measurement on two cores (docs/benchmarks.md):
+# intrinsic's sources in three batches (its Eigen-heavy flow and measure files share most instantiations: four cost
+# 20 s more), the others in two, so that the last batches to start — the command's — finish together.
+function(conformesh_unity_build target batches)
   if(CONFORMESH_UNITY_BUILD)
-    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${batch})
+    get_target_property(sources ${target} SOURCES)
+    list(LENGTH sources count)
+    math(EXPR size "(${count} + ${batches} - 1) / ${batches}")
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${size})
   endif()
 endfunction()
