@@ -3,9 +3,11 @@
 # CMakeLists.txt, after the libraries' folders found their dependencies (cache variables are visible here; imported
 # targets and plain variables of a subfolder are not, so OpenMP is looked up again).
 # Ceres: Debian ships libceres.a and libceres.so; -lceres takes the shared library, which brings glog, gflags,
-# SuiteSparse and BLAS itself (the static archive would need them all listed).
+# SuiteSparse and BLAS itself (the static archive would need them all listed). glog is named too: Ceres' headers
+# expand glog's CHECK macros into our own objects, which then call glog directly (seen once the unity build emitted
+# google::base::CheckOpMessageBuilder::NewString out of line; the linker takes no symbol through libceres's own needs).
 find_package(OpenMP REQUIRED)
-set(_pc_libs -lceres ${GeographicLib_LIBRARIES} ${CHOLMOD_LIBRARY} ${SCOTCH_LIBRARY}
+set(_pc_libs -lceres -lglog ${GeographicLib_LIBRARIES} ${CHOLMOD_LIBRARY} ${SCOTCH_LIBRARY}
              ${SCOTCH_ERR_LIBRARY} ${HDF5_C_LIBRARY})
 if(CONFORMESH_WITH_MPI)
   list(APPEND _pc_libs ${MPI_CXX_LIBRARIES})
