@@ -337,27 +337,32 @@ std::vector<std::vector<int>> HalfedgeMesh::boundaryLoops() const {
   return loops;
 }
 
-std::vector<ComponentTopology> HalfedgeMesh::components() const {
-  const int nF = nFaces();
-  std::vector<int> comp(nF, kInvalid);
-  std::vector<ComponentTopology> result;
+std::vector<int> HalfedgeMesh::faceComponents() const {
+  std::vector<int> comp(nFaces(), kInvalid);
   std::vector<int> queue;
-  for (int seed = 0; seed < nF; ++seed) {
+  int count = 0;
+  for (int seed = 0; seed < nFaces(); ++seed) {
     if (comp[seed] != kInvalid) continue;
-    const int c = static_cast<int>(result.size());
-    result.emplace_back();
-    comp[seed] = c;
+    comp[seed] = count;
     queue.assign(1, seed);
     for (size_t qi = 0; qi < queue.size(); ++qi)
       for (int k = 0; k < 3; ++k) {
         const int t = twin_[3 * queue[qi] + k];
         if (t != kInvalid && comp[t / 3] == kInvalid) {
-          comp[t / 3] = c;
+          comp[t / 3] = count;
           queue.push_back(t / 3);
         }
       }
-    result[c].faces = static_cast<int>(queue.size());
+    ++count;
   }
+  return comp;
+}
+
+std::vector<ComponentTopology> HalfedgeMesh::components() const {
+  const std::vector<int> comp = faceComponents();
+  const int count = comp.empty() ? 0 : *std::max_element(comp.begin(), comp.end()) + 1;
+  std::vector<ComponentTopology> result(count);
+  for (int f = 0; f < nFaces(); ++f) ++result[comp[f]].faces;
   for (int v = 0; v < nVertices(); ++v) ++result[comp[vertexHalfedge_[v] / 3]].vertices;
   for (int e = 0; e < nEdges(); ++e) ++result[comp[edgeHalfedge_[e] / 3]].edges;
   for (const auto& loop : boundaryLoops()) ++result[comp[loop.front() / 3]].boundaryLoops;

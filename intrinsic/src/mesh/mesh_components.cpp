@@ -10,28 +10,6 @@ namespace conformesh::intrinsic {
 
 namespace {
 
-// Per face, its component's index, in HalfedgeMesh::components()'s order (breadth-first from the smallest face).
-std::vector<int> faceComponents(const HalfedgeMesh& m) {
-  std::vector<int> comp(m.nFaces(), kInvalid);
-  std::vector<int> queue;
-  int count = 0;
-  for (int seed = 0; seed < m.nFaces(); ++seed) {
-    if (comp[seed] != kInvalid) continue;
-    comp[seed] = count;
-    queue.assign(1, seed);
-    for (std::size_t qi = 0; qi < queue.size(); ++qi)
-      for (int k = 0; k < 3; ++k) {
-        const int t = m.twin(3 * queue[qi] + k);
-        if (t != kInvalid && comp[HalfedgeMesh::face(t)] == kInvalid) {
-          comp[HalfedgeMesh::face(t)] = count;
-          queue.push_back(HalfedgeMesh::face(t));
-        }
-      }
-    ++count;
-  }
-  return comp;
-}
-
 // The file data of one component: its faces renumbered, its edges with their lengths (and corner edges when the
 // input needs them), read back by toTriangulation exactly as a file of that component alone would be.
 MeshData componentData(const MeshData& whole, const MeshComponent& c) {
@@ -92,7 +70,7 @@ std::vector<MeshComponent> splitComponents(const IntrinsicTriangulation& tri) {
     for (int f = 0; f < m.nFaces(); ++f) out[0].faces.push_back(f);
     return out;
   }
-  const std::vector<int> comp = faceComponents(m);
+  const std::vector<int> comp = m.faceComponents();
   for (int f = 0; f < m.nFaces(); ++f) out[comp[f]].faces.push_back(f);
   for (int v = 0; v < m.nVertices(); ++v) out[comp[HalfedgeMesh::face(m.vertexHalfedge(v))]].vertices.push_back(v);
   const MeshData whole = fromTriangulation(tri);

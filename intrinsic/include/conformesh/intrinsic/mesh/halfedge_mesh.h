@@ -101,6 +101,9 @@ class HalfedgeMesh {
 
   // === topology
   std::vector<ComponentTopology> components() const;
+  // Per face, the index of its connected component (faces joined across interior edges), numbered in the order of
+  // components(): breadth-first from the smallest unlabelled face.
+  std::vector<int> faceComponents() const;
   int eulerCharacteristic() const { return nVertices() - nEdges() + nFaces(); }
   // Each boundary loop as its list of boundary halfedges, in order.
   std::vector<std::vector<int>> boundaryLoops() const;
