@@ -8,21 +8,26 @@ reads what `discretize` wrote). `conformesh` is the build's binary, `python3` th
 `scripts/` and `docs/` the source tree's, `build/tests/data/meshes/` and bare mesh names (`blade.off`) the test data folder's.
 `$ cat FILE` of a file that does not exist yet writes the shown text to FILE (the docs show an input that way).
 
-Compared as printed, except wall-clock figures: a number followed by " s" and every number on a line that starts
+Compared as printed (strictly: see same_line), except wall-clock figures: a number followed by " s" and every number on a line that starts
 with "seconds" (after indentation) or holds `"seconds"`, and the last column of a table headed "... sec"
 (`convergence`), are masked. A block whose commands print nothing is run
 but not compared; a block in which no command shows output is a recipe (docs/studies.md's long runs) and is not run.
-A line "..." in the docs matches any run of lines. A command must exit 0 unless the docs show its error
+A line "..." in the docs matches any run of lines.
+An example that differs only as another x86-64 CPU makes it differ (PORTABLE_RELATIVE, ROUND_OFF) is reported as a note
+and does not fail the run unless --strict: the same binary and libraries give other round-off on an AMD EPYC than on
+the Intel Xeon the pages were written on (not OpenBLAS's kernel choice: OPENBLAS_CORETYPE does not move them), and a
+tie broken the other way moves discrete outcomes slightly (2 of 8327 vertices). A command must exit 0 unless the docs show its error
 ("error:" in its output) or its exit status (`; echo "exit status $?"`).
 
-  doc_examples.py --conformesh BIN --data DIR [--python PY] [--update] docs/cli.md ...
+  doc_examples.py --conformesh BIN --data DIR [--python PY] [--update] [--strict] docs/cli.md ...
 
 Exit 0 when every page matches; 1 with a unified diff per mismatching block (page and line named); 2 for bad usage.
---update rewrites the docs' outputs with what the build prints (review the diff, then commit it with the change that
+--update rewrites the docs' outputs (every example that does not match strictly) with what the build prints (review the diff, then commit it with the change that
 moved the numbers).
 """
 import argparse
 import difflib
+import math
 import os
 import re
 import shutil
@@ -62,22 +67,43 @@ def significant_digits(text):
     return len(re.sub(r"[eE].*$", "", text).lstrip("+-").replace(".", "").lstrip("0"))
 
 
-def same_line(expected, actual):
-    """Equal lines, except that two numbers both printed with 15 or more significant digits (%.17g round trips) need
-    only agree to 1e-12 relative: their last digits follow the kernels OpenBLAS picks for the CPU (CHOLMOD's supernodal
-    solves), not the code. 1e-12 is far below any figure the docs discuss (tolerances 1e-10 and above)."""
+# Cross-machine precision (the second tier of same_line): a figure may move by 1e-3 relative (the largest seen between
+# the two CPUs: e_G 2.7446e-3 -> 2.7469e-3, 8.4e-4), and a round-off figure — both |x| below ROUND_OFF, a residual or
+# an error at machine precision — by a factor of 10 either way or to the other sign. Index of the element where such a
+# round-off maximum sits (`edge 224`) is free.
+PORTABLE_RELATIVE = 1e-3
+ROUND_OFF = 1e-9
+ELEMENT_INDEX = re.compile(r"\b(edge|vertex|face|triangle) $")
+
+
+def same_number(e, a, portable):
+    """Two printed figures. Strict: equal text, or both printed with 15 or more significant digits (%.17g round trips)
+    and within 1e-12 relative (their last digits are round-off, far below any tolerance the docs discuss, 1e-10 and
+    above). Portable: also the cross-machine tier above."""
+    if e == a:
+        return True
+    x, y = float(e), float(a)
+    if min(significant_digits(e), significant_digits(a)) >= 15 and abs(x - y) <= 1e-12 * max(abs(x), abs(y)):
+        return True
+    if not portable:
+        return False
+    if abs(x) < ROUND_OFF and abs(y) < ROUND_OFF:
+        return x == 0 == y or (x != 0 and y != 0 and abs(math.log10(abs(x) / abs(y))) <= 1)
+    return abs(x - y) <= PORTABLE_RELATIVE * max(abs(x), abs(y))
+
+
+def same_line(expected, actual, portable=False):
+    """Equal lines up to same_number on each figure (the text between figures equal)."""
     if expected == actual:
         return True
-    e_nums, a_nums = [m.group(0) for m in NUMBER.finditer(expected)], [m.group(0) for m in NUMBER.finditer(actual)]
-    if len(e_nums) != len(a_nums) or NUMBER.sub("#", expected) != NUMBER.sub("#", actual):
+    e_it, a_it = list(NUMBER.finditer(expected)), list(NUMBER.finditer(actual))
+    if len(e_it) != len(a_it) or NUMBER.sub("#", expected) != NUMBER.sub("#", actual):
         return False
-    for e, a in zip(e_nums, a_nums):
-        if e == a:
+    round_off_line = portable and any(abs(float(m.group(0))) < ROUND_OFF and float(m.group(0)) != 0 for m in e_it)
+    for em, am in zip(e_it, a_it):
+        if round_off_line and ELEMENT_INDEX.search(expected[:em.start()]):
             continue
-        if min(significant_digits(e), significant_digits(a)) < 15:
-            return False
-        x, y = float(e), float(a)
-        if abs(x - y) > 1e-12 * max(abs(x), abs(y)):
+        if not same_number(em.group(0), am.group(0), portable):
             return False
     return True
 
@@ -103,13 +129,14 @@ def normalize_lines(lines):
     return out
 
 
-def matches(expected, actual):
+def matches(expected, actual, portable=False):
     """Line-by-line equality (lines already normalized; same_line), with "..." matching any run of lines."""
     if not expected:
         return not actual
     if expected[0].strip() == "...":
-        return any(matches(expected[1:], actual[k:]) for k in range(len(actual) + 1))
-    return bool(actual) and same_line(expected[0], actual[0]) and matches(expected[1:], actual[1:])
+        return any(matches(expected[1:], actual[k:], portable) for k in range(len(actual) + 1))
+    return (bool(actual) and same_line(expected[0], actual[0], portable) and
+            matches(expected[1:], actual[1:], portable))
 
 
 def scratch_folder(args):
@@ -149,7 +176,7 @@ def check_page(path, args):
         text = f.read()
     work, bin_dir = scratch_folder(args)
     env = dict(os.environ, PATH=bin_dir + os.pathsep + os.environ.get("PATH", ""), MPLBACKEND="Agg")
-    failures, replacements = 0, []
+    failures, notes, replacements = 0, 0, []
     try:
         for start, cmds, end in parse_blocks(text):
             if not any(expected for _, expected, _, _ in cmds):
@@ -163,20 +190,26 @@ def check_page(path, args):
                     failures += 1
                     continue
                 if expected and not matches(normalize_lines(expected), normalize_lines(actual)):
-                    failures += 1
-                    diff = difflib.unified_diff(expected, actual, f"{path}:{at} (docs)", "the build prints", lineterm="")
+                    portable = matches(normalize_lines(expected), normalize_lines(actual), portable=True)
+                    if portable and not args.strict:
+                        notes += 1
+                        head = f"{path}:{at} (docs; matches to cross-machine precision only)"
+                    else:
+                        failures += 1
+                        head = f"{path}:{at} (docs)"
+                    diff = difflib.unified_diff(expected, actual, head, "the build prints", lineterm="")
                     print("\n".join(diff), file=sys.stderr)
                     replacements.append((out_at, len(expected), actual))
     finally:
         shutil.rmtree(work, ignore_errors=True)
-    if args.update and failures:
+    if args.update and replacements:
         lines = text.split("\n")
         for out_at, n, actual in sorted(replacements, reverse=True):
             lines[out_at:out_at + n] = actual
         with open(path, "w") as f:
             f.write("\n".join(lines))
         print(f"{path}: outputs rewritten from the build", file=sys.stderr)
-    return failures
+    return failures, notes
 
 
 def main():
@@ -185,14 +218,18 @@ def main():
     ap.add_argument("--data", required=True, help="the test data folder (CGAL's meshes)")
     ap.add_argument("--python", default=sys.executable, help="interpreter for the docs' python3 (default: this one)")
     ap.add_argument("--update", action="store_true", help="rewrite the docs' outputs with what the build prints")
+    ap.add_argument("--strict", action="store_true",
+                    help="fail on examples that match only to cross-machine precision (same machine as the pages)")
     ap.add_argument("pages", nargs="+", help="docs/*.md pages")
     args = ap.parse_args()
     for p in [args.conformesh, args.data] + args.pages:
         if not os.path.exists(p):
             print(f"doc_examples: {p}: no such file", file=sys.stderr)
             return 2
-    failures = sum(check_page(p, args) for p in args.pages)
-    print(f"doc_examples: {len(args.pages)} pages, {failures} mismatching examples")
+    counts = [check_page(p, args) for p in args.pages]
+    failures, notes = sum(c[0] for c in counts), sum(c[1] for c in counts)
+    print(f"doc_examples: {len(args.pages)} pages, {failures} mismatching examples, {notes} matching to cross-machine "
+          f"precision only" + ("" if args.strict else " (--strict fails on those)"))
     return 1 if failures else 0
 
 
