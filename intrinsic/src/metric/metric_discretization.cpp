@@ -182,32 +182,65 @@ double angleFrom(double a, double b, double c) {
   return std::acos(std::clamp((b * b + c * c - a * a) / (2 * b * c), -1.0, 1.0));
 }
 
-}  // namespace
-
-double chartCurveLength(const SmoothMetric& m, const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
-                        const DiscretizationOptions& o) {
-  const ChartDomain d = m.domain();
-  std::vector<double> nodes, weights;
-  gaussLegendre(o.gaussPoints, nodes, weights);
-  const Eigen::Vector3d dx = xb - xa;
-  auto speed = [&](double t) {
+// Speed |dc/dt|_g of the chart curve traced by the reference segment xa + t(xb − xa), t ∈ [0, 1].
+class ChartCurveSpeed {
+ public:
+  ChartCurveSpeed(const SmoothMetric& m, const Eigen::Vector3d& xa, const Eigen::Vector3d& xb)
+      : m_(m), d_(m.domain()), xa_(xa), dx_(xb - xa) {}
+  double operator()(double t) const {
     Eigen::Vector2d duv;
-    const Eigen::Vector2d c = chartPoint(d, xa + t * dx, dx, &duv);
-    return std::sqrt(std::max(0.0, duv.dot(m.g(c.x(), c.y()) * duv)));
-  };
+    const Eigen::Vector2d c = chartPoint(d_, xa_ + t * dx_, dx_, &duv);
+    return std::sqrt(std::max(0.0, duv.dot(m_.g(c.x(), c.y()) * duv)));
+  }
+
+ private:
+  const SmoothMetric& m_;
+  const ChartDomain d_;
+  const Eigen::Vector3d xa_, dx_;
+};
+
+// Recursive halving of one Gauss–Legendre rule; 30 levels (pieces of 1e-9 of the curve) is the hard stop.
+double lengthByHalving(const ChartCurveSpeed& speed, const DiscretizationOptions& o) {
+  const GaussLegendreRule& rule = gaussLegendreRule(o.gaussPoints);
   auto piece = [&](double t0, double t1) {
     double s = 0;
-    for (size_t k = 0; k < nodes.size(); ++k) s += weights[k] * speed(0.5 * (t0 + t1) + 0.5 * (t1 - t0) * nodes[k]);
+    for (size_t k = 0; k < rule.nodes.size(); ++k)
+      s += rule.weights[k] * speed(0.5 * (t0 + t1) + 0.5 * (t1 - t0) * rule.nodes[k]);
     return 0.5 * (t1 - t0) * s;
   };
-  // Recursive halving; 30 levels (pieces of 1e-9 of the edge) is the hard stop.
   std::function<double(double, double, double, int)> rec = [&](double t0, double t1, double whole, int depth) {
     const double tm = 0.5 * (t0 + t1), left = piece(t0, tm), right = piece(tm, t1);
     if (std::abs(left + right - whole) <= o.lengthTolerance * std::abs(left + right) || depth >= 30)
       return left + right;
     return rec(t0, tm, left, depth + 1) + rec(tm, t1, right, depth + 1);
   };
-  const double len = rec(0, 1, piece(0, 1), 0);
+  return rec(0, 1, piece(0, 1), 0);
+}
+
+// G7–K15 on [t0, t1], halving where |K15 − G7| > tolerance·K15; 30 levels is the hard stop.
+double lengthByKronrod(const ChartCurveSpeed& speed, double t0, double t1, double tolerance, int depth) {
+  using GK = GaussKronrod15;
+  const double c = 0.5 * (t0 + t1), h = 0.5 * (t1 - t0);
+  const double f0 = speed(c);
+  double k15 = GK::kronrodWeights[GK::kNodes - 1] * f0, g7 = GK::gaussWeights[3] * f0;
+  for (int k = 0; k + 1 < GK::kNodes; ++k) {
+    const double pair = speed(c - h * GK::nodes[k]) + speed(c + h * GK::nodes[k]);
+    k15 += GK::kronrodWeights[k] * pair;
+    if (k % 2 == 1) g7 += GK::gaussWeights[k / 2] * pair;
+  }
+  k15 *= h, g7 *= h;
+  if (std::abs(k15 - g7) <= tolerance * std::abs(k15) || depth >= 30) return k15;
+  return lengthByKronrod(speed, t0, c, tolerance, depth + 1) + lengthByKronrod(speed, c, t1, tolerance, depth + 1);
+}
+
+}  // namespace
+
+double chartCurveLength(const SmoothMetric& m, const Eigen::Vector3d& xa, const Eigen::Vector3d& xb,
+                        const DiscretizationOptions& o) {
+  const ChartCurveSpeed speed(m, xa, xb);
+  const double len = o.curveRule == DiscretizationOptions::CurveRule::GaussKronrod15
+                         ? lengthByKronrod(speed, 0, 1, o.lengthTolerance, 0)
+                         : lengthByHalving(speed, o);
   if (!std::isfinite(len)) throw InputError(m.description() + ": the metric length of a chart curve is not finite");
   return len;
 }

@@ -44,13 +44,8 @@ double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 // tens of degrees at f = −0.5 in GeographicLib 2.1.2); this uses e² itself.
 // Round trips taupf∘τ agree to a relative 1e-15 over f ∈ [−98, 0.3] (4e-12 at f = 0.99, the conditioning of τ(τ'));
 // 100 iterations is a hard cap, never reached.
-double tauFromTaup(double taup, double e2, double es) {
+double newtonTau(double taup, double tau, double e2, double es) {
   const double e2m = 1 - e2;
-  // Start from Math::tauf where it is right (oblate: within ~1e-12, so one Newton step polishes it), else from
-  // Karney's own initial guess.
-  double tau = e2 >= 0               ? GeographicLib::Math::tauf(taup, es)
-               : std::abs(taup) > 70 ? taup * std::exp(GeographicLib::Math::eatanhe(1.0, es))
-                                     : taup / e2m;
   for (int i = 0; i < 100; ++i) {
     const double tp = GeographicLib::Math::taupf(tau, es);
     const double dtau = (taup - tp) * (1 + e2m * tau * tau) / (e2m * std::hypot(1.0, tau) * std::hypot(1.0, tp));
@@ -59,6 +54,58 @@ double tauFromTaup(double taup, double e2, double es) {
     if (!(std::abs(dtau) >= 1.5e-8 * std::max(1.0, std::abs(tau)))) break;
   }
   return tau;
+}
+double tauFromTaup(double taup, double e2, double es) {
+  // Start from Math::tauf where it is right (oblate: within ~1e-12, so one Newton step polishes it), else from
+  // Karney's own initial guess.
+  const double tau = e2 >= 0               ? GeographicLib::Math::tauf(taup, es)
+                     : std::abs(taup) > 70 ? taup * std::exp(GeographicLib::Math::eatanhe(1.0, es))
+                                           : taup / (1 - e2);
+  return newtonTau(taup, tau, e2, es);
+}
+
+// The sine coefficients b_k (k = 1..K) of φ − χ, odd and π-periodic in the conformal latitude χ, by trigonometric
+// interpolation of the exact inversion at N = 128 points χ_j = πj/N of one period: b_k = (2/N) Σ_j (φ − χ)(χ_j)
+// sin 2kχ_j, exact for a series of degree < N/2 (aliasing from the dropped b_{N±k} only). Trailing |b_k| < 1e-17 are
+// dropped. The series is only a Newton guess: it is kept when it matches the exact inversion to 1e-9 at the N/2
+// midpoints of (0, π/2), so that one Newton step lands at round-off; otherwise (|f| near 1, strongly prolate: slow
+// convergence) the result is empty and conformalScale keeps GeographicLib's guess.
+std::vector<double> conformalLatitudeSeries(double e2, double es) {
+  const int N = 128;
+  auto deviation = [&](double chi) {  // φ − χ at χ ∈ (−π/2, π/2)
+    return std::atan(tauFromTaup(std::tan(chi), e2, es)) - chi;
+  };
+  std::vector<double> f(N, 0.0);
+  for (int j = 0; j < N; ++j)
+    if (2 * j != N) f[j] = deviation(j < N / 2 ? M_PI * j / N : M_PI * j / N - M_PI);
+  std::vector<double> b(N / 2 - 1, 0.0);
+  for (int k = 1; k < N / 2; ++k) {
+    double sum = 0;
+    for (int j = 0; j < N; ++j) sum += f[j] * std::sin(2 * k * M_PI * j / N);
+    b[k - 1] = 2 * sum / N;
+  }
+  while (!b.empty() && std::abs(b.back()) < 1e-17) b.pop_back();
+  for (int j = 0; j < N / 2; ++j) {
+    const double chi = M_PI * (j + 0.5) / N;
+    double series = 0;
+    for (size_t k = 0; k < b.size(); ++k) series += b[k] * std::sin(2 * (k + 1) * chi);
+    if (!(std::abs(series - deviation(chi)) <= 1e-9)) return {};
+  }
+  return b;
+}
+
+// tan φ at conformal colatitude θ = π/2 − χ (s = sin θ > 0, c = cos θ) from the series: δ = φ − χ by Clenshaw's
+// recurrence in sin 2kχ (sin 2χ = 2sc, cos 2χ = s² − c², no further trigonometry), then tan(χ + δ) =
+// (c + s tan δ) / (s − c tan δ).
+double seriesTau(const std::vector<double>& b, double s, double c) {
+  const double sin2 = 2 * s * c, cos2 = s * s - c * c;
+  double y1 = 0, y2 = 0;
+  for (size_t k = b.size(); k-- > 0;) {
+    const double y = b[k] + 2 * cos2 * y1 - y2;
+    y2 = y1, y1 = y;
+  }
+  const double t = std::tan(y1 * sin2);
+  return (c + s * t) / (s - c * t);
 }
 
 // Fourth-order central difference of a matrix-valued function of one variable (used for second derivatives of g from
@@ -113,6 +160,7 @@ EllipsoidMetric::EllipsoidMetric(double a, double f) : a_(a), f_(f) {
   e2_ = f * (2 - f);
   es_ = (f < 0 ? -1 : 1) * std::sqrt(std::abs(e2_));
   geodesic_ = std::make_shared<GeographicLib::GeodesicExact>(a, f);
+  latitudeSeries_ = conformalLatitudeSeries(e2_, es_);
 }
 std::string EllipsoidMetric::description() const {
   return "ellipsoid a=" + fmt(a_) + " f=" + fmt(f_);
@@ -140,8 +188,11 @@ double EllipsoidMetric::conformalScale(double theta) const {
   // At the pole m → ν(90°) · exp(−e atanh e) (the limit of cos φ / cos χ, GeographicLib's polar stereographic scale);
   // below θ = 1e-12 the O(θ²) difference is below 1e-24 relative.
   if (s < 1e-12) return a_ / std::sqrt(1 - e2_) * std::exp(-GeographicLib::Math::eatanhe(1.0, es_));
-  const double taup = std::cos(theta) / s;
-  const double tau = tauFromTaup(taup, e2_, es_);
+  const double c = std::cos(theta), taup = c / s;
+  const double guess = latitudeSeries_.empty() ? NAN : seriesTau(latitudeSeries_, s, c);
+  // A guess of the wrong sign (never seen; τ and τ' share their sign) or not finite falls back to GeographicLib's.
+  const double tau =
+      std::isfinite(guess) && guess * taup >= 0 ? newtonTau(taup, guess, e2_, es_) : tauFromTaup(taup, e2_, es_);
   const double cphi = 1 / std::hypot(1.0, tau), sphi = tau * cphi;
   const double nu = a_ / std::sqrt(1 - e2_ * sphi * sphi);
   return nu * cphi / s;
@@ -354,11 +405,16 @@ std::optional<double> HyperbolicDiskMetric::geodesicDistance(const Eigen::Vector
 // =====================================================================================================================
 // parametric surfaces, graphs, Bézier patches
 
-ParametricSurfaceMetric::ParametricSurfaceMetric(std::string name, std::string description, ChartDomain domain, Map map)
-    : name_(std::move(name)), description_(std::move(description)), domain_(domain), map_(std::move(map)) {}
+ParametricSurfaceMetric::ParametricSurfaceMetric(std::string name, std::string description, ChartDomain domain, Map map,
+                                                 Map tangents)
+    : name_(std::move(name)),
+      description_(std::move(description)),
+      domain_(domain),
+      map_(std::move(map)),
+      tangents_(std::move(tangents)) {}
 
 Eigen::Matrix2d ParametricSurfaceMetric::g(double u, double v) const {
-  const SurfaceJet s = map_(u, v);
+  const SurfaceJet s = tangents_ ? tangents_(u, v) : map_(u, v);
   Eigen::Matrix2d m;
   m << s.xu.dot(s.xu), s.xu.dot(s.xv), s.xu.dot(s.xv), s.xv.dot(s.xv);
   return m;
@@ -439,10 +495,32 @@ SurfaceJet evaluateBezierPatch(const BezierControlNet& net, double u, double v) 
   return s;
 }
 
+SurfaceJet evaluateBezierTangents(const BezierControlNet& net, double u, double v) {
+  // The Bernstein values and first derivatives of evaluateBezierPatch, by the same expressions in the same order.
+  auto basis = [](double t, std::array<double, 4>& b, std::array<double, 4>& db) {
+    const double s = 1 - t;
+    b = {s * s * s, 3 * t * s * s, 3 * t * t * s, t * t * t};
+    db = {-3 * s * s, 3 * s * s - 6 * t * s, 6 * t * s - 3 * t * t, 3 * t * t};
+  };
+  std::array<double, 4> bu, dbu, bv, dbv;
+  basis(u, bu, dbu);
+  basis(v, bv, dbv);
+  SurfaceJet s;
+  s.x.setZero(), s.xu.setZero(), s.xv.setZero(), s.xuu.setZero(), s.xuv.setZero(), s.xvv.setZero();
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const Eigen::Vector3d& p = net[i][j];
+      s.xu += dbu[i] * bv[j] * p;
+      s.xv += bu[i] * dbv[j] * p;
+    }
+  return s;
+}
+
 std::unique_ptr<ParametricSurfaceMetric> makeBezierPatch(std::string description, const BezierControlNet& net) {
   ChartDomain d;  // [0,1]², no identification
   return std::make_unique<ParametricSurfaceMetric>(
-      "bezier-patch", std::move(description), d, [net](double u, double v) { return evaluateBezierPatch(net, u, v); });
+      "bezier-patch", std::move(description), d, [net](double u, double v) { return evaluateBezierPatch(net, u, v); },
+      [net](double u, double v) { return evaluateBezierTangents(net, u, v); });
 }
 
 }  // namespace conformesh::intrinsic

@@ -37,6 +37,31 @@ void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weigh
   }
 }
 
+const GaussLegendreRule& gaussLegendreRule(int n) {
+  if (n < 1 || n > 64)
+    throw InputError("Gauss-Legendre rule: node count must lie in 1..64, found " + std::to_string(n));
+  // All 64 rules at once on first use (a few 10⁵ flops); a function-local static is initialized exactly once even
+  // under OpenMP threads (C++11 [stmt.dcl]/4).
+  static const std::vector<GaussLegendreRule> rules = [] {
+    std::vector<GaussLegendreRule> r(65);
+    for (int k = 1; k <= 64; ++k) gaussLegendre(k, r[k].nodes, r[k].weights);
+    return r;
+  }();
+  return rules[n];
+}
+
+const double GaussKronrod15::nodes[kNodes] = {0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+                                              0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+                                              0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+                                              0.207784955007898467600689403773245, 0.000000000000000000000000000000000};
+const double GaussKronrod15::kronrodWeights[kNodes] = {
+    0.022935322010529224963732008058970, 0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
+    0.140653259715525918745189590510238, 0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+    0.204432940075298892414161999234649, 0.209482141084727828012999174891714};
+const double GaussKronrod15::gaussWeights[4] = {
+    0.129484966168869693270611432679082, 0.279705391489276667901467771423780, 0.381830050505118944950369775488975,
+    0.417959183673469387755102040816327};
+
 namespace {
 
 struct Rule {

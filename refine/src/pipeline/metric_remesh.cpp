@@ -305,11 +305,12 @@ class UniformizedRemesh {
     }
   }
 
-  // Output lengths: the metric length of each edge's curve (the reference-straight segment between its ends), by
-  // 6-node Gauss–Legendre pieces halved until two sums agree to 1e-12 relative; the edges are shared among threads.
+  // Output lengths: the metric length of each edge's curve (the reference-straight segment between its ends), by the
+  // Gauss–Kronrod pair G7–K15, pieces halved until |K15 − G7| ≤ 1e-12·K15 (an estimate of G7's error; the K15 kept is
+  // more accurate); the edges are shared among threads.
   void measureLengths(const HalfedgeMesh& m1) {
     DiscretizationOptions disc = options_.discretization;
-    disc.gaussPoints = 6;
+    disc.curveRule = DiscretizationOptions::CurveRule::GaussKronrod15;
     disc.lengthTolerance = 1e-12;
     out_.mesh.mesh = m1;
     out_.mesh.background = Background::Euclidean;

@@ -8,10 +8,13 @@
 #include <cmath>
 #include <iostream>
 
+#include <Eigen/Geometry>
+
+#include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/mesh/curvature.h"
-#include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
+#include "conformesh/intrinsic/metric/metric_families.h"
 #include "conformesh/intrinsic/metric/metric_registry.h"
 
 using namespace conformesh;
@@ -97,6 +100,61 @@ TEST_CASE("ellipsoid: chart-curve lengths converge to GeodesicExact at relative 
     CHECK(p == Approx(2).margin(0.25));
     CHECK(areaOrder(e, e.area(), {4, 8, 16, 32}, 2, 0) == Approx(2).margin(0.15));
   }
+}
+
+TEST_CASE("chart-curve lengths against closed forms, both rules, to the 1e-12 they promise") {
+  DiscretizationOptions halving;  // discretize's rule: 10 nodes, 1e-13
+  DiscretizationOptions kronrod;  // the pull-back's: G7-K15, 1e-12 (metric_remesh.cpp)
+  kronrod.curveRule = DiscretizationOptions::CurveRule::GaussKronrod15;
+  kronrod.lengthTolerance = 1e-12;
+  double worst = 0;
+  auto check = [&](const SmoothMetric& m, const Eigen::Vector3d& xa, const Eigen::Vector3d& xb, double exact,
+                   const char* what) {
+    for (const DiscretizationOptions* o : {&halving, &kronrod}) {
+      const double rel = std::abs(chartCurveLength(m, xa, xb, *o) / exact - 1);
+      INFO(what << (o == &kronrod ? " (G7-K15)" : " (halving)") << ": relative error " << rel);
+      CHECK(rel <= 1e-12);
+      worst = std::max(worst, rel);
+    }
+  };
+  // Arcs of at least 0.05 rad: on shorter ones the closed forms' own round-off (endpoints rounded to 1e-16 of their
+  // size, E(φb) − E(φa) cancelling) exceeds 1e-12 of the arc. Sphere of radius R: a great arc of angle α has length Rα.
+  const RoundSphereMetric sphere(2.5);
+  const ChartDomain ds = sphere.domain();
+  for (double alpha : {0.05, 0.3, 1.0, 2.5}) {
+    const Eigen::Vector3d xa = referencePoint(ds, 0.3, 1.1);
+    const Eigen::Vector3d axis = xa.cross(Eigen::Vector3d(0.2, 0.5, 0.9)).normalized();
+    const Eigen::Vector3d xb = std::cos(alpha) * xa + std::sin(alpha) * axis.cross(xa);
+    check(sphere, xa, xb, 2.5 * alpha, "sphere great arc");
+  }
+  // Ellipsoid f = 0.3: a meridian arc from geographic latitude φa to φb is a·|E(π/2 − βb, e) − E(π/2 − βa, e)| with
+  // β = atan((1 − f) tan φ) the parametric latitude (the meridian x = a cos β, z = b sin β); its chart points are
+  // θ = π/2 − χ(φ), χ = asin tanh(atanh sin φ − e atanh(e sin φ)) (closed forms, no inversion). An equator arc of Δλ
+  // has length aΔλ.
+  const double a = 1.3, f = 0.3, e = std::sqrt(f * (2 - f));
+  const EllipsoidMetric ell(a, f);
+  const ChartDomain de = ell.domain();
+  auto theta = [&](double phi) {
+    return M_PI / 2 - std::asin(std::tanh(std::atanh(std::sin(phi)) - e * std::atanh(e * std::sin(phi))));
+  };
+  auto meridian = [&](double phi) { return a * std::ellint_2(e, M_PI / 2 - std::atan((1 - f) * std::tan(phi))); };
+  for (auto [pa, pb] : {std::pair{0.1, 0.3}, {-0.4, -0.1}, {0.7, 1.0}, {-0.2, 0.9}, {1.2, 1.5}}) {
+    check(ell, referencePoint(de, 0.7, theta(pa)), referencePoint(de, 0.7, theta(pb)),
+          std::abs(meridian(pa) - meridian(pb)), "ellipsoid meridian");
+  }
+  for (double dl : {0.05, 0.1, 1.5})
+    check(ell, referencePoint(de, 0.2, M_PI / 2), referencePoint(de, 0.2 + dl, M_PI / 2), a * dl, "ellipsoid equator");
+  // Bicubic patch of the paraboloid z = u² + v² (test_metric_families.cpp): the line v = 0 is the parabola z = u²,
+  // of length √5/2 + asinh(2)/4 over u ∈ [0, 1]; the diagonal u = v = t has speed √(2 + 16t²).
+  BezierControlNet net;
+  const double c[4] = {0, 0, 1.0 / 3, 1};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) net[i][j] = {i / 3.0, j / 3.0, c[i] + c[j]};
+  const auto patch = makeBezierPatch("paraboloid", net);
+  check(*patch, {0, 0, 0}, {1, 0, 0}, std::sqrt(5.0) / 2 + std::asinh(2.0) / 4, "parabola");
+  check(*patch, {0, 0, 0}, {1, 1, 0}, std::sqrt(2.0) * (1.5 + std::asinh(2 * std::sqrt(2.0)) / (4 * std::sqrt(2.0))),
+        "paraboloid diagonal");
+  std::cout << "chart-curve lengths: worst relative error against closed forms " << worst << "\n";
 }
 
 TEST_CASE("Kerr-Newman: closed T0 for every spin up to extremal, area 8 pi M r+ at second order") {

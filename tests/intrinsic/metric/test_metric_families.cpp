@@ -5,13 +5,14 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <iostream>
 
 #include <GeographicLib/Ellipsoid.hpp>
 
-#include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/metric/metric_registry.h"
+#include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
+#include "conformesh/intrinsic/metric/metric_registry.h"
 
 using namespace conformesh;
 using namespace conformesh::intrinsic;
@@ -211,7 +212,47 @@ TEST_CASE("function graph and Bezier patch: K from the second fundamental form")
       CHECK(patch->gaussianCurvature(u, v) == Approx(4 / (w * w)).epsilon(1e-13));
       CHECK(brioschiCurvature(patch->jet(u, v)) == Approx(4 / (w * w)).epsilon(1e-8));
       CHECK((patch->position(u, v) - Eigen::Vector3d(u, v, u * u + v * v)).norm() < 1e-15);
+      // g() reads only the tangents: bit for bit the first fundamental form of the full evaluation.
+      const SurfaceJet full = evaluateBezierPatch(net, u, v), tangents = evaluateBezierTangents(net, u, v);
+      CHECK(tangents.xu == full.xu);
+      CHECK(tangents.xv == full.xv);
+      Eigen::Matrix2d g;
+      g << full.xu.dot(full.xu), full.xu.dot(full.xv), full.xu.dot(full.xv), full.xv.dot(full.xv);
+      CHECK(patch->g(u, v) == g);
     }
+}
+
+TEST_CASE("ellipsoid: the conformal scale m(theta) against GeographicLib's latitudes, to round-off") {
+  // m = nu cos(phi) / cos(chi) at chi = 90 deg - theta. Reference 1: the forward map, chi = ConformalLatitude(phi)
+  // (GeographicLib; no inversion), for every f. Reference 2 (oblate only: GeographicLib 2.1.2's tauf is wrong for
+  // prolate ellipsoids, metric_families.cpp): phi = InverseConformalLatitude(chi), GeographicLib's own Newton
+  // iteration from its own guess. conformalScale starts its Newton step from a fitted sine series instead; both must
+  // agree to a few ulps, scaled by the conditioning (1 - f)^-2 of phi(chi) at the rim as in the test above.
+  for (double f : {1 / 298.257223563, 0.1, 0.3, 0.6, 0.9, 0.99, -0.5, -3.0}) {
+    const double a = 1.7;
+    INFO("f = " << f);
+    const EllipsoidMetric e(a, f);
+    const GeographicLib::Ellipsoid ref(a, f);
+    const double tol = 4e-15 * std::max(1.0, 1 / ((1 - f) * (1 - f)));
+    double worst2 = 0;
+    double worst = 0;
+    for (int i = 1; i < 400; ++i) {
+      const double phiDeg = -90 + 180.0 * i / 400 + 0.01 * std::sin(i);  // 399 latitudes, not symmetric
+      const double chiDeg = ref.ConformalLatitude(phiDeg), theta = (90 - chiDeg) * M_PI / 180;
+      const double m1 = ref.TransverseCurvatureRadius(phiDeg) * std::cos(phiDeg * M_PI / 180) / std::sin(theta);
+      const double r1 = std::abs(e.conformalScale(theta) / m1 - 1);
+      worst = std::max(worst, r1 * std::sin(theta));
+      CHECK(r1 <= tol * std::max(1.0, 1 / std::sin(theta)));  // θ in degrees → radians rounds at ~ε/θ near the poles
+      if (f > 0 && f <= 0.9) {
+        const double phi2 = ref.InverseConformalLatitude(chiDeg);
+        const double m2 = ref.TransverseCurvatureRadius(phi2) * std::cos(phi2 * M_PI / 180) / std::sin(theta);
+        worst2 = std::max(worst2, std::abs(e.conformalScale(theta) / m2 - 1) * std::sin(theta));
+        CHECK(std::abs(e.conformalScale(theta) / m2 - 1) <= tol * std::max(1.0, 1 / std::sin(theta)));
+      }
+    }
+    std::cout << "ellipsoid f=" << f << ": max relative |m - m_ref| " << worst << ", against the inverse " << worst2
+              << "\n";
+  }
 }
 
 TEST_CASE("registry: every family builds with its defaults; bad names and parameters are named") {

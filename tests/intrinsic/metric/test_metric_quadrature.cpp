@@ -25,6 +25,36 @@ TEST_CASE("Gauss-Legendre rules integrate polynomials of degree 2n-1 exactly") {
   REQUIRE_THROWS_AS(gaussLegendre(0, x, w), InputError);
 }
 
+TEST_CASE("cached Gauss-Legendre rules equal the computed ones; the G7-K15 pair's degrees and its G7 half") {
+  for (int n : {1, 6, 10, 64}) {
+    std::vector<double> x, w;
+    gaussLegendre(n, x, w);
+    CHECK(gaussLegendreRule(n).nodes == x);  // bit for bit: the same computation, done once
+    CHECK(gaussLegendreRule(n).weights == w);
+  }
+  REQUIRE_THROWS_AS(gaussLegendreRule(65), InputError);
+  using GK = GaussKronrod15;
+  // The G7 half: nodes x_1, x_3, x_5, x_7 and their weights are the 7-point Gauss-Legendre rule (descending nodes
+  // of gaussLegendre, computed by Newton here, independently of the tables).
+  std::vector<double> x, w;
+  gaussLegendre(7, x, w);
+  for (int j = 0; j < 4; ++j) {
+    CHECK(GK::nodes[2 * j + 1] == Approx(x[j]).margin(2e-16));
+    CHECK(GK::gaussWeights[j] == Approx(w[j]).margin(4e-16));
+  }
+  // K15 integrates every monomial of degree ≤ 22 exactly on [−1, 1] (odd ones vanish by symmetry): ∫ x^d = 2/(d+1).
+  for (int d = 0; d <= 22; d += 2) {
+    double k15 = GK::kronrodWeights[GK::kNodes - 1] * (d == 0 ? 1.0 : 0.0);
+    for (int k = 0; k + 1 < GK::kNodes; ++k) k15 += 2 * GK::kronrodWeights[k] * std::pow(GK::nodes[k], d);
+    INFO("degree " << d);
+    CHECK(k15 == Approx(2.0 / (d + 1)).epsilon(1e-15));
+  }
+  // and not degree 24 (the pair's degree is 3·7 + 1 = 22 for even moments): the tables are the K15 ones, not better.
+  double k24 = 0;
+  for (int k = 0; k + 1 < GK::kNodes; ++k) k24 += 2 * GK::kronrodWeights[k] * std::pow(GK::nodes[k], 24);
+  CHECK(std::abs(k24 - 2.0 / 25) > 1e-8);
+}
+
 TEST_CASE("rectangles: a smooth oscillating integrand to 1e-12") {
   auto f = [](double u, double v) { return std::exp(u) * std::cos(3 * v); };
   const QuadratureResult r = integrateOverRectangle(f, 0, 2, -1, 0.5);

@@ -26,6 +26,14 @@ struct DiscretizationOptions {
   // agree to lengthTolerance (relative). 1e-13 is ~500 ε, above the round-off of a sum of ~100 speeds.
   int gaussPoints = 10;
   double lengthTolerance = 1e-13;
+  // The rule chartCurveLength applies. GaussLegendreHalving: the gaussPoints-node rule above, halving until two
+  // successive composite sums agree (at least 3·gaussPoints speeds per curve). GaussKronrod15: the G7–K15 pair
+  // (metric_quadrature.h) on the whole curve, K15 accepted when |K15 − G7| ≤ lengthTolerance·K15, else both halves
+  // measured the same way (15 speeds per curve that is resolved at once; gaussPoints unused). |K15 − G7| estimates the
+  // error of G7 (degree 13), so the accepted K15 (degree 22) is more accurate than the estimate states, as the
+  // halving rule's finer sum is more accurate than the coarse one the test measures.
+  enum class CurveRule { GaussLegendreHalving, GaussKronrod15 };
+  CurveRule curveRule = CurveRule::GaussLegendreHalving;
 };
 
 struct DiscretizationReport {

@@ -77,7 +77,9 @@ class EllipsoidMetric : public SmoothMetric {
   // Geographic latitude φ (radians) of conformal colatitude θ, and the inverse.
   double geographicLatitude(double theta) const;
   double conformalColatitude(double phi) const;
-  // The conformal scale factor m(θ) = |ds| / |ds on the unit sphere|.
+  // The conformal scale factor m(θ) = |ds| / |ds on the unit sphere|. What g() evaluates (every output edge's length
+  // calls it at 15+ points), so its Newton iteration starts from the sine series below: one step then reaches
+  // round-off where three or four from GeographicLib's own guess did.
   double conformalScale(double theta) const;
   // Closed-form area: 2πa² (1 + (1 − e²) atanh(e)/e) (oblate; = 2πa² + πb²/e·ln((1+e)/(1−e))), continued to
   // prolate ellipsoids (e² < 0) as 2πa² (1 + (b/a)² atan(|e|)/|e|).
@@ -85,6 +87,8 @@ class EllipsoidMetric : public SmoothMetric {
 
  private:
   double a_, f_, e2_, es_;
+  // φ − χ = Σ_k b_k sin 2kχ (b_1 first), fitted at construction to the exact inversion; empty where it fits badly.
+  std::vector<double> latitudeSeries_;
   std::shared_ptr<const GeographicLib::GeodesicExact> geodesic_;
 };
 
@@ -198,7 +202,9 @@ struct SurfaceJet {
 class ParametricSurfaceMetric : public SmoothMetric {
  public:
   using Map = std::function<SurfaceJet(double u, double v)>;
-  ParametricSurfaceMetric(std::string name, std::string description, ChartDomain domain, Map map);
+  // `tangents`, when given, returns X_u and X_v (the other fields unused) equal bit for bit to map's: g() then
+  // evaluates only what the first fundamental form needs (every output edge's length calls g at 15+ points).
+  ParametricSurfaceMetric(std::string name, std::string description, ChartDomain domain, Map map, Map tangents = {});
   std::string family() const override { return name_; }
   std::string description() const override { return description_; }
   ChartDomain domain() const override { return domain_; }
@@ -211,7 +217,7 @@ class ParametricSurfaceMetric : public SmoothMetric {
  private:
   std::string name_, description_;
   ChartDomain domain_;
-  Map map_;
+  Map map_, tangents_;
 };
 
 // The graph z = f(x,y) over a rectangle; `height` returns {f, f_x, f_y, f_xx, f_xy, f_yy}.
@@ -222,6 +228,8 @@ std::unique_ptr<ParametricSurfaceMetric> makeFunctionGraph(std::string descripti
 // One bicubic Bézier patch over [0,1]², control points P[i][j] (i along u, j along v).
 using BezierControlNet = std::array<std::array<Eigen::Vector3d, 4>, 4>;
 SurfaceJet evaluateBezierPatch(const BezierControlNet& net, double u, double v);
+// X_u and X_v only (x and the second derivatives left zero), bit for bit those of evaluateBezierPatch.
+SurfaceJet evaluateBezierTangents(const BezierControlNet& net, double u, double v);
 std::unique_ptr<ParametricSurfaceMetric> makeBezierPatch(std::string description, const BezierControlNet& net);
 
 }  // namespace conformesh::intrinsic

@@ -45,6 +45,24 @@ struct QuadratureResult {
 // Gauss–Legendre nodes and weights on [−1, 1] (Newton on P_n from Chebyshev guesses, to full double accuracy).
 void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights);
 
+// The same rule, computed once per n on first use (thread-safe) and kept for the process: what per-call users (every
+// output edge's length) read instead of recomputing the nodes. Throws InputError outside 1..64.
+struct GaussLegendreRule {
+  std::vector<double> nodes, weights;  // on [−1, 1]
+};
+const GaussLegendreRule& gaussLegendreRule(int n);
+
+// The Gauss–Kronrod pair G7–K15 on [−1, 1] (Kronrod 1965; the tables of QUADPACK's dqk15, Piessens et al. 1983):
+// the 15 Kronrod nodes ±x_k in decreasing order with x_7 = 0, their weights, and the weights of the 7-point
+// Gauss–Legendre rule on the odd-indexed nodes x_1, x_3, x_5, x_7. K15 integrates polynomials of degree ≤ 22 exactly,
+// G7 those of degree ≤ 13; |K15 − G7| estimates G7's error, far above K15's own for a smooth integrand.
+struct GaussKronrod15 {
+  static constexpr int kNodes = 8;             // x_0..x_7 ≥ 0; the rule uses ±x_k
+  static const double nodes[kNodes];           // x_0 = 0.9914… down to x_7 = 0
+  static const double kronrodWeights[kNodes];  // K15 weight of ±x_k
+  static const double gaussWeights[4];         // G7 weight of ±x_{2j+1}, j = 0..3
+};
+
 QuadratureResult integrateOverRectangle(const ChartFunction& f, double u0, double u1, double v0, double v1,
                                         const QuadratureOptions& options = {});
 // Either orientation; the result is ∫ f over the triangle (non-negative measure).
