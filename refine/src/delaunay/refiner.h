@@ -99,6 +99,7 @@ class Refiner {
   void flip(int e);
   void restoreDelaunay(std::vector<int>& stack, int center = intrinsic::kInvalid);  // consumes `stack`
   int delaunaySign(int e) const;
+  bool sphericalBothAcute(int e) const;  // delaunaySign's filter in the spherical background
   void afterInsertion(int p);
   void appendVertexData(const InputLocation& location);
   void splitSegment(int e);

@@ -48,6 +48,7 @@ int Refiner::delaunaySign(int e) const {
   // round-off is below 1e-14 times the sum of the magnitudes of the quotients. Returns +1 (certainly Delaunay, with
   // room for delaunayMargin's 1e-12 tolerance), −1 (certainly not Delaunay: α + β > π, so the quad is convex and the
   // flip is admissible), 0 (too close to call: delaunayMargin decides).
+  if (tri_.background == Background::Spherical) return sphericalBothAcute(e) ? 1 : 0;
   if (tri_.background != Background::Euclidean) return 0;
   const HalfedgeMesh& m = tri_.mesh;
   const int h = m.edgeHalfedge(e), g = m.twin(h);
@@ -73,6 +74,26 @@ int Refiner::delaunaySign(int e) const {
   if (sum > bound + 1e-12) return 1;
   if (sum < -bound) return -1;
   return 0;
+}
+
+bool Refiner::sphericalBothAcute(int e) const {
+  // The spherical filter of delaunaySign. On the unit sphere the angles of a triangle sum to π + E (E > 0 its area), so
+  // delaunayMargin = ½(ρ − α − β) = π + (E₁ + E₂)/2 − α − β, with α, β the angles opposite e and ρ the sum of the four
+  // others: two acute opposite angles make the edge Delaunay with a margin above (E₁ + E₂)/2. The sign of cos α is
+  // that of cos a − cos b · cos c (spherical law of cosines; sin b · sin c > 0 for sides in (0, π)), whose absolute
+  // round-off is a few units of 1e-16 since every term is at most 1: above 1e-14 the angle is certainly acute. Five
+  // cosines instead of the six angles' 24 sines and 6 arctangents; an edge that fails goes to delaunayMargin.
+  const HalfedgeMesh& m = tri_.mesh;
+  const int h = m.edgeHalfedge(e), g = m.twin(h);
+  const double a = tri_.edgeLengths[e];
+  if (!(a < M_PI)) return false;
+  const double cosA = std::cos(a);
+  for (int x : {h, g}) {
+    const double b = tri_.length(HalfedgeMesh::next(x)), c = tri_.length(HalfedgeMesh::prev(x));
+    if (!(b < M_PI && c < M_PI)) return false;
+    if (!(cosA - std::cos(b) * std::cos(c) > 1e-14)) return false;
+  }
+  return true;
 }
 
 void Refiner::restoreDelaunay(std::vector<int>& stack, int center) {
