@@ -22,7 +22,7 @@ tie broken the other way moves discrete outcomes slightly (2 of 8327 vertices). 
   doc_examples.py --conformesh BIN --data DIR [--python PY] [--update] [--strict] docs/cli.md ...
 
 Exit 0 when every page matches; 1 with a unified diff per mismatching block (page and line named); 2 for bad usage.
---update rewrites the docs' outputs (every example that does not match strictly) with what the build prints (review the diff, then commit it with the change that
+--update rewrites the docs' outputs of the examples that fail (with --strict: of every one that differs) with what the build prints (review the diff, then commit it with the change that
 moved the numbers).
 """
 import argparse
@@ -197,9 +197,9 @@ def check_page(path, args):
                     else:
                         failures += 1
                         head = f"{path}:{at} (docs)"
+                        replacements.append((out_at, len(expected), actual))
                     diff = difflib.unified_diff(expected, actual, head, "the build prints", lineterm="")
                     print("\n".join(diff), file=sys.stderr)
-                    replacements.append((out_at, len(expected), actual))
     finally:
         shutil.rmtree(work, ignore_errors=True)
     if args.update and replacements:
