@@ -8,6 +8,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <exception>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -166,7 +168,8 @@ struct MeasureContext {
   std::vector<double> atom;  // discrete: 2π − Σθ inside, π − Σθ on the boundary (0 there without terms)
   std::vector<SignedIntegral> edgeKg;  // per halfedge; only boundary halfedges are filled
   std::vector<double> turning;         // per vertex: π − α at boundary vertices (smooth), else 0
-  std::vector<int> fanStart, fanFaces;  // per vertex x: its faces in fan-walk order, fanFaces[fanStart[x], fanStart[x+1])
+  std::vector<int> fanStart,
+      fanFaces;  // per vertex x: its faces in fan-walk order, fanFaces[fanStart[x], fanStart[x+1])
   double smoothTotal = 0, smoothBoundary = 0;
 
   MeasureContext(const IntrinsicTriangulation& mesh, const std::vector<Eigen::Vector3d>& referencePoints,
@@ -183,13 +186,8 @@ struct MeasureContext {
     // Smooth side, once per triangle: ∫K dA and ∫|K| dA over the triangle's image, and the quadratic fit of the
     // density for triangles that a ball's rim cuts.
     const ChartFunction kDensity = curvatureDensity(metric);
-    face.resize(m.nFaces());
-    for (int f = 0; f < m.nFaces(); ++f) {
-      const Eigen::Vector3d& a = ref[m.faceVertex(f, 0)];
-      face[f] = sampleFace(domain, kDensity, a, unwrapNear(domain, a, ref[m.faceVertex(f, 1)]),
-                           unwrapNear(domain, a, ref[m.faceVertex(f, 2)]));
-      smoothTotal += face[f].integral;
-    }
+    sampleFaces(kDensity);
+    for (int f = 0; f < m.nFaces(); ++f) smoothTotal += face[f].integral;  // in index order, whatever the threads
     flattenFans();
     atom = vertexCurvatures(mesh);
     turning.assign(m.nVertices(), 0.0);
@@ -216,6 +214,33 @@ struct MeasureContext {
       turning[v] = vertexTurning(v);
       smoothBoundary += turning[v];
     }
+  }
+
+  // face[f] for every face, on two cores (each face is written by one chunk; the metric is read only). An exception
+  // in a chunk is rethrown here, the lowest chunk's, as a serial loop would have thrown the first.
+  void sampleFaces(const ChartFunction& kDensity) {
+    face.resize(m.nFaces());
+    constexpr int kChunks = 8;
+    std::exception_ptr failed[kChunks];
+    const std::ptrdiff_t nF = m.nFaces();
+    auto chunk = [&](int c) {
+      try {
+        const int f0 = static_cast<int>(nF * c / kChunks), f1 = static_cast<int>(nF * (c + 1) / kChunks);
+        for (int f = f0; f < f1; ++f) {
+          const Eigen::Vector3d& a = ref[m.faceVertex(f, 0)];
+          face[f] = sampleFace(domain, kDensity, a, unwrapNear(domain, a, ref[m.faceVertex(f, 1)]),
+                               unwrapNear(domain, a, ref[m.faceVertex(f, 2)]));
+        }
+      } catch (...) {
+        failed[c] = std::current_exception();
+      }
+    };
+    if (nF < kParallelMin)
+      for (int c = 0; c < kChunks; ++c) chunk(c);
+    else
+      runChunks(kChunks, chunk);
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
   }
 
   // The faces around every vertex in the order the halfedge fan walk (vertexHalfedge, nextOutgoing) visits them.
@@ -315,12 +340,17 @@ struct MeasureContext {
   // Face f's share of {d < r}, d[k] the level at its k-th vertex: nothing when no vertex is inside, its whole ∫K dA and
   // ∫|K| dA when all three are, else the part the rim d = r (d interpolated linearly) leaves inside.
   void addFace(int f, const double d[3], double r, RegionCurvatureMeasure& out) const {
+    addFaceShare(face[f], d, r, out);
+  }
+  // Not inlined, so that it is compiled once, for the default target, whichever clone calls it.
+  __attribute__((noinline)) static void addFaceShare(const FaceDensity& fd, const double d[3], double r,
+                                                     RegionCurvatureMeasure& out) {
     int inside = 0;
     for (int k = 0; k < 3; ++k) inside += d[k] < r;
     if (inside == 0) return;
     if (inside == 3) {
-      out.smooth += face[f].integral;
-      out.absoluteScale += face[f].absIntegral;
+      out.smooth += fd.integral;
+      out.absoluteScale += fd.absIntegral;
       return;
     }
     // The rim cuts the triangle: integrate the face's quadratic density over the part inside, one or two
@@ -334,15 +364,15 @@ struct MeasureContext {
     if (inside == 1) {
       const int i = d[0] < r ? 0 : (d[1] < r ? 1 : 2), j = (i + 1) % 3, k = (i + 2) % 3;
       const Eigen::Vector2d pj = cut(i, j, ti), pk = cut(i, k, tj);
-      out.smooth += face[f].over(corner[i], pj, pk);
+      out.smooth += fd.over(corner[i], pj, pk);
       fraction = ti * tj;
     } else {
       const int o = d[0] >= r ? 0 : (d[1] >= r ? 1 : 2), i = (o + 1) % 3, j = (o + 2) % 3;
       const Eigen::Vector2d pi = cut(i, o, ti), pj = cut(j, o, tj);
-      out.smooth += face[f].over(corner[i], corner[j], pj) + face[f].over(corner[i], pj, pi);
+      out.smooth += fd.over(corner[i], corner[j], pj) + fd.over(corner[i], pj, pi);
       fraction = 1 - (1 - ti) * (1 - tj);
     }
-    out.absoluteScale += fraction * face[f].absIntegral;
+    out.absoluteScale += fraction * fd.absIntegral;
   }
 
   // Theorem 3.4's region: the relative interior (in M) of the union of the triangles whose three vertices are within
@@ -411,11 +441,12 @@ Neighbours flattenNeighbours(const IntrinsicTriangulation& mesh) {
 
 // The balls of gaussianCurvatureMeasure, one per vertex: Dijkstra from the centre over the graph of edges, cut at
 // reach = r + the longest edge (so that every triangle the rim cuts has all three distances), then the region's two
-// measures. Each ball costs its size, a fixed fraction of the vertices, so all n of them cost O(n²) (docs/benchmarks.md);
-// this class keeps the constant small: the neighbours with their edge lengths (and in MeasureContext the fans' faces),
-// in the order the halfedge fan walk visits them, are flattened into arrays once, and the balls are shared between two cores
-// (runChunks). Every ball's sums run over the same vertices and faces in the same order as a serial sweep — the
-// Dijkstra pop order, (distance, vertex) ascending — so the results do not depend on the threads.
+// measures. Each ball costs its size, a fixed fraction of the vertices, so all n of them cost O(n²)
+// (docs/benchmarks.md); this class keeps the constant small: the neighbours with their edge lengths (and in
+// MeasureContext the fans' faces), in the order the halfedge fan walk visits them, are flattened into arrays once, and
+// the balls are shared between two cores (runChunks). Every ball's sums run over the same vertices and faces in the
+// same order as a serial sweep — the Dijkstra pop order, (distance, vertex) ascending — so the results do not depend on
+// the threads.
 class BallSweep {
  public:
   BallSweep(const MeasureContext& ctx, const IntrinsicTriangulation& mesh, double radius, MeasureRegion region)
@@ -528,14 +559,28 @@ class BallSweep {
 // floating-point sum taken from the centre. The sums then add the same terms as BallSweep's, in another order: the
 // terms that are inside for every lane (a vertex's atom, a face's whole integral) once into a sum common to the patch,
 // the others lane by lane (the rim annulus). Every patch is independent, so the threads do not change the result.
+//
+// For speed the sweep works on its own copy of the mesh's connectivity, renumbered in patch order (vertex i of the
+// copy is centres_[i]; faces numbered by first appearance in those vertices' fans), so that the loads of a Dijkstra
+// are near one another: neighbours, edge lengths, atoms, fans and face integrals in compact arrays (structure of
+// arrays). The renumbering keeps every list's order, and slots are numbered in discovery order, so the pop order, the
+// slots and every sum's order are those of the plain numbering: the results are the same bits. A relaxation is 16
+// lanes of add, compare and select, four at a time (relaxLanes).
+// Four distance lanes, for PatchSweep's relaxation.
+typedef double LaneQuad __attribute__((vector_size(32)));
+
 class PatchSweep {
  public:
   static constexpr int kLanes = 16;
 
   PatchSweep(const MeasureContext& ctx, const IntrinsicTriangulation& mesh, double radius)
-      : ctx_(ctx), m_(mesh.mesh), radius_(radius), nbr_(flattenNeighbours(mesh)) {
+      : ctx_(ctx), m_(mesh.mesh), radius_(radius) {
     reach_ = radius + *std::max_element(mesh.edgeLengths.begin(), mesh.edgeLengths.end());
-    buildPatches();
+    const Neighbours nbr = flattenNeighbours(mesh);
+    unreached_.fill(INFINITY);
+    buildPatches(nbr);
+    renumberVertices(nbr);
+    renumberFaces();
   }
 
   // Fills r.discrete, r.smooth, r.absoluteScale and r.relativeError for every vertex, in blocks of a hundredth of the
@@ -555,13 +600,18 @@ class PatchSweep {
   }
 
  private:
-  using Lanes = std::array<double, kLanes>;
+  // Where vertex x (sweep numbering) sits in the current patch: its slot, valid when stamp == the patch.
+  struct SlotRef {
+    int stamp = -1, slot = -1;
+  };
 
-  // Per-thread work arrays of one patch: its vertices by local slot, their lane distances, the queue.
+  // Per-thread work arrays of one patch: its vertices by local slot, their lane distances (slot x's lanes at
+  // dist[kLanes x, kLanes x + kLanes)), the queue.
   struct Scratch {
-    std::vector<int> slotOf, slotStamp, faceStamp;  // global → slot, valid where slotStamp == patch
-    std::vector<int> verts, faces;                  // slot → vertex; the faces touching the region
-    std::vector<Lanes> dist;
+    std::vector<SlotRef> ref;       // per vertex
+    std::vector<int> faceStamp;     // per face
+    std::vector<int> verts, faces;  // slot → vertex; the faces touching the region
+    std::vector<double> dist;
     std::vector<double> lo, hi, pendingKey;  // per slot: min and max over the patch's lanes; queued key
     std::vector<char> pending;
     std::vector<std::pair<double, int>> heap;  // (key, slot)
@@ -569,7 +619,7 @@ class PatchSweep {
 
   // Patches: seeds taken in breadth-first order over the mesh, each grown breadth-first over the vertices not yet in a
   // patch until it holds kLanes (fewer where they run out), so consecutive patches are neighbours.
-  void buildPatches() {
+  void buildPatches(const Neighbours& nbr) {
     const int nV = m_.nVertices();
     std::vector<int> order;
     order.reserve(nV);
@@ -579,8 +629,8 @@ class PatchSweep {
       seen[s] = 1;
       order.push_back(s);
       for (size_t q = order.size() - 1; q < order.size(); ++q)
-        for (int k = nbr_.start[order[q]]; k < nbr_.start[order[q] + 1]; ++k) {
-          const int y = nbr_.list[k].first;
+        for (int k = nbr.start[order[q]]; k < nbr.start[order[q] + 1]; ++k) {
+          const int y = nbr.list[k].first;
           if (!seen[y]) seen[y] = 1, order.push_back(y);
         }
     }
@@ -591,8 +641,8 @@ class PatchSweep {
       grow.assign(1, seed);
       taken[seed] = 1;
       for (size_t q = 0; q < grow.size() && static_cast<int>(grow.size()) < kLanes; ++q)
-        for (int k = nbr_.start[grow[q]]; k < nbr_.start[grow[q] + 1] && static_cast<int>(grow.size()) < kLanes; ++k) {
-          const int y = nbr_.list[k].first;
+        for (int k = nbr.start[grow[q]]; k < nbr.start[grow[q] + 1] && static_cast<int>(grow.size()) < kLanes; ++k) {
+          const int y = nbr.list[k].first;
           if (!taken[y]) taken[y] = 1, grow.push_back(y);
         }
       centres_.insert(centres_.end(), grow.begin(), grow.end());
@@ -600,13 +650,66 @@ class PatchSweep {
     }
   }
 
+  // The sweep numbering: vertex i is centres_[i] (every vertex is in exactly one patch). The neighbour lists keep
+  // their order, with the edge lengths in an array of their own.
+  void renumberVertices(const Neighbours& nbr) {
+    const int nV = m_.nVertices();
+    newOf_.assign(nV, -1);
+    for (int i = 0; i < nV; ++i) newOf_[centres_[i]] = i;
+    adjStart_.assign(nV + 1, 0);
+    adjTo_.reserve(nbr.list.size());
+    adjLen_.reserve(nbr.list.size());
+    atom_.resize(nV);
+    boundary_.resize(nV);
+    for (int i = 0; i < nV; ++i) {
+      const int g = centres_[i];
+      for (int k = nbr.start[g]; k < nbr.start[g + 1]; ++k) {
+        adjTo_.push_back(newOf_[nbr.list[k].first]);
+        adjLen_.push_back(nbr.list[k].second);
+      }
+      adjStart_[i + 1] = static_cast<int>(adjTo_.size());
+      atom_[i] = ctx_.atom[g];
+      boundary_[i] = ctx_.boundaryTerms && m_.isBoundaryVertex(g);
+    }
+  }
+
+  // Faces numbered by first appearance in the renumbered vertices' fans (fan order kept), with their three vertices
+  // (sweep numbering, the mesh's corner order) and whole-face integrals alongside.
+  void renumberFaces() {
+    const int nV = m_.nVertices(), nF = m_.nFaces();
+    std::vector<int> newFace(nF, -1);
+    fanStart_.assign(nV + 1, 0);
+    fanFaces_.reserve(ctx_.fanFaces.size());
+    faceOld_.reserve(nF);
+    for (int i = 0; i < nV; ++i) {
+      const int g = centres_[i];
+      for (int fk = ctx_.fanStart[g]; fk < ctx_.fanStart[g + 1]; ++fk) {
+        const int f = ctx_.fanFaces[fk];
+        if (newFace[f] < 0) newFace[f] = static_cast<int>(faceOld_.size()), faceOld_.push_back(f);
+        fanFaces_.push_back(newFace[f]);
+      }
+      fanStart_[i + 1] = static_cast<int>(fanFaces_.size());
+    }
+    const int nUsed = static_cast<int>(faceOld_.size());
+    faceVerts_.resize(3 * static_cast<size_t>(nUsed));
+    faceIntegral_.resize(nUsed);
+    faceAbs_.resize(nUsed);
+    faceDensity_.resize(nUsed);
+    for (int f = 0; f < nUsed; ++f) {
+      const int g = faceOld_[f];
+      for (int k = 0; k < 3; ++k) faceVerts_[3 * f + k] = newOf_[m_.faceVertex(g, k)];
+      faceIntegral_[f] = ctx_.face[g].integral;
+      faceAbs_[f] = ctx_.face[g].absIntegral;
+      faceDensity_[f] = ctx_.face[g];
+    }
+  }
+
   std::unique_ptr<Scratch> takeScratch() const {
     std::lock_guard<std::mutex> lock(poolMutex_);
     if (pool_.empty()) {
       auto s = std::make_unique<Scratch>();
-      s->slotOf.assign(m_.nVertices(), -1);
-      s->slotStamp.assign(m_.nVertices(), -1);
-      s->faceStamp.assign(m_.nFaces(), -1);
+      s->ref.assign(m_.nVertices(), SlotRef{});
+      s->faceStamp.assign(faceOld_.size(), -1);
       return s;
     }
     std::unique_ptr<Scratch> s = std::move(pool_.back());
@@ -619,16 +722,15 @@ class PatchSweep {
   }
 
   int slot(int x, int patch, Scratch& s) const {
-    if (s.slotStamp[x] == patch) return s.slotOf[x];
-    s.slotStamp[x] = patch;
-    s.slotOf[x] = static_cast<int>(s.verts.size());
+    SlotRef& ref = s.ref[x];
+    if (ref.stamp == patch) return ref.slot;
+    ref.stamp = patch;
+    ref.slot = static_cast<int>(s.verts.size());
     s.verts.push_back(x);
-    Lanes inf;
-    inf.fill(INFINITY);
-    s.dist.push_back(inf);
+    s.dist.insert(s.dist.end(), kLanes, INFINITY);
     s.pending.push_back(0);
     s.pendingKey.push_back(INFINITY);
-    return s.slotOf[x];
+    return ref.slot;
   }
 
   void enqueue(int y, double key, Scratch& s) const {
@@ -639,13 +741,36 @@ class PatchSweep {
     std::push_heap(s.heap.begin(), s.heap.end(), std::greater<std::pair<double, int>>());
   }
 
+  // dy[c] = min(dy[c], dx[c] + len) for the lanes where dx[c] + len ≤ reach; returns the least improved lane's new
+  // value (∞ if none). Branch-free on four lanes at a time (GCC vector extensions: two SSE2 instructions each in the
+  // default build, one AVX2 instruction in grow's AVX2 clone); add, compare and select are exact per lane, so the
+  // width cannot change a bit.
+  __attribute__((always_inline)) double relaxLanes(const double* dx, double* dy, double len) const {
+    const LaneQuad l = {len, len, len, len}, reach = {reach_, reach_, reach_, reach_};
+    const LaneQuad inf = {INFINITY, INFINITY, INFINITY, INFINITY};
+    LaneQuad best = inf;
+    for (int c = 0; c < kLanes; c += 4) {
+      LaneQuad from, old;
+      std::memcpy(&from, dx + c, sizeof from);
+      std::memcpy(&old, dy + c, sizeof old);
+      const LaneQuad d = from + l;
+      const LaneQuad capped = d <= reach ? d : inf;
+      const LaneQuad improved = capped < old ? capped : inf;
+      const LaneQuad updated = capped < old ? capped : old;
+      std::memcpy(dy + c, &updated, sizeof updated);
+      best = improved < best ? improved : best;
+    }
+    const double b01 = best[0] < best[1] ? best[0] : best[1], b23 = best[2] < best[3] ? best[2] : best[3];
+    return b01 < b23 ? b01 : b23;
+  }
+
   // The label-correcting Dijkstra of patch p: a slot is queued at the least of its lanes that improved, and relaxes
   // all its lanes when popped; it ends when no lane improves, at the least fixed point (the class comment).
-  void grow(int p, Scratch& s) const {
+  __attribute__((target_clones("avx2", "default"))) void grow(int p, Scratch& s) const {
     s.verts.clear(), s.dist.clear(), s.pending.clear(), s.pendingKey.clear(), s.heap.clear();
     for (int c = 0; c < patchStart_[p + 1] - patchStart_[p]; ++c) {
-      const int x = slot(centres_[patchStart_[p] + c], p, s);
-      s.dist[x][c] = 0;
+      const int x = slot(patchStart_[p] + c, p, s);
+      s.dist[kLanes * static_cast<size_t>(x) + c] = 0;
       enqueue(x, 0.0, s);
     }
     const auto later = std::greater<std::pair<double, int>>();
@@ -656,26 +781,20 @@ class PatchSweep {
       if (!s.pending[x]) continue;
       s.pending[x] = 0;
       const int gx = s.verts[x];
-      for (int k = nbr_.start[gx]; k < nbr_.start[gx + 1]; ++k) {
-        const auto [gy, len] = nbr_.list[k];
-        const int y = slot(gy, p, s);
-        const Lanes& dx = s.dist[x];
-        Lanes& dy = s.dist[y];
-        double best = INFINITY;
-        for (int c = 0; c < kLanes; ++c) {  // branch-free, so that the lanes vectorize
-          const double d = dx[c] + len;
-          const bool better = d <= reach_ && d < dy[c];
-          dy[c] = better ? d : dy[c];
-          best = better && d < best ? d : best;
-        }
+      for (int k = adjStart_[gx]; k < adjStart_[gx + 1]; ++k) {
+        const int y = slot(adjTo_[k], p, s);  // may grow s.dist: take its address after
+        const double best =
+            relaxLanes(&s.dist[kLanes * static_cast<size_t>(x)], &s.dist[kLanes * static_cast<size_t>(y)], adjLen_[k]);
         if (best < INFINITY) enqueue(y, best, s);
       }
     }
-    s.lo.resize(s.verts.size());
-    s.hi.resize(s.verts.size());
-    for (size_t x = 0; x < s.verts.size(); ++x) {
-      s.lo[x] = *std::min_element(s.dist[x].begin(), s.dist[x].end());
-      s.hi[x] = *std::max_element(s.dist[x].begin(), s.dist[x].end());
+    const size_t n = s.verts.size();
+    s.lo.resize(n);
+    s.hi.resize(n);
+    for (size_t x = 0; x < n; ++x) {
+      const double* d = &s.dist[kLanes * x];
+      s.lo[x] = *std::min_element(d, d + kLanes);
+      s.hi[x] = *std::max_element(d, d + kLanes);
     }
   }
 
@@ -692,71 +811,109 @@ class PatchSweep {
       r.discrete[v] = common.discrete + b.discrete;
       r.smooth[v] = common.smooth + b.smooth;
       r.absoluteScale[v] = common.absoluteScale + b.absoluteScale;
-      r.relativeError[v] =
-          r.absoluteScale[v] > 0 ? (r.discrete[v] - r.smooth[v]) / r.absoluteScale[v] : 0.0;
+      r.relativeError[v] = r.absoluteScale[v] > 0 ? (r.discrete[v] - r.smooth[v]) / r.absoluteScale[v] : 0.0;
     }
   }
 
-  // The distance of global vertex x in lane c of patch p (infinite where the patch never reached it).
+  // The distance of vertex x (sweep numbering) in lane c of patch p (infinite where the patch never reached it).
   double distance(int x, int c, int p, const Scratch& s) const {
-    return s.slotStamp[x] == p ? s.dist[s.slotOf[x]][c] : INFINITY;
+    const SlotRef& ref = s.ref[x];
+    return ref.stamp == p ? s.dist[kLanes * static_cast<size_t>(ref.slot) + c] : INFINITY;
   }
 
   void sumVertices(int p, Scratch& s, int lanes, RegionCurvatureMeasure& common,
                    std::array<RegionCurvatureMeasure, kLanes>& lane) const {
     for (size_t x = 0; x < s.verts.size(); ++x) {
       if (s.lo[x] >= radius_) continue;
-      const int g = s.verts[x];
-      const bool boundary = ctx_.boundaryTerms && m_.isBoundaryVertex(g);
+      const int i = s.verts[x];
+      const bool boundary = boundary_[i];
       if (s.hi[x] < radius_ && !boundary) {
-        common.discrete += ctx_.atom[g];
+        common.discrete += atom_[i];
         continue;
       }
+      const double* d = &s.dist[kLanes * x];
       for (int c = 0; c < lanes; ++c) {
-        if (s.dist[x][c] >= radius_) continue;
-        lane[c].discrete += ctx_.atom[g];
-        if (boundary) ctx_.addBoundaryAtoms(g, [&](int y) { return distance(y, c, p, s); }, radius_, lane[c]);
+        if (d[c] >= radius_) continue;
+        lane[c].discrete += atom_[i];
+        if (boundary)
+          ctx_.addBoundaryAtoms(
+              centres_[i], [&](int y) { return distance(newOf_[y], c, p, s); }, radius_, lane[c]);
       }
     }
   }
 
-  void sumFaces(int p, Scratch& s, int lanes, RegionCurvatureMeasure& common,
-                std::array<RegionCurvatureMeasure, kLanes>& lane) const {
+  __attribute__((target_clones("avx2", "default"))) void sumFaces(
+      int p, Scratch& s, int lanes, RegionCurvatureMeasure& common,
+      std::array<RegionCurvatureMeasure, kLanes>& lane) const {
     s.faces.clear();
     for (size_t x = 0; x < s.verts.size(); ++x) {
       if (s.lo[x] >= radius_) continue;
-      const int g = s.verts[x];
-      for (int fk = ctx_.fanStart[g]; fk < ctx_.fanStart[g + 1]; ++fk) {
-        const int f = ctx_.fanFaces[fk];
+      const int i = s.verts[x];
+      for (int fk = fanStart_[i]; fk < fanStart_[i + 1]; ++fk) {
+        const int f = fanFaces_[fk];
         if (s.faceStamp[f] != p) s.faceStamp[f] = p, s.faces.push_back(f);
       }
     }
+    // The rim faces lane by lane, four lanes at a time: per lane the same operations in the same face order as
+    // addFace (a whole face's integrals added where its three vertices are inside, addFaceShare where the rim cuts it).
+    std::array<double, kLanes> smooth, scale;
+    for (int c = 0; c < kLanes; ++c) smooth[c] = lane[c].smooth, scale[c] = lane[c].absoluteScale;
+    const LaneQuad r = {radius_, radius_, radius_, radius_};
     for (int f : s.faces) {
-      int sl[3];
+      const double* row[3];
       double hi = 0;
       for (int k = 0; k < 3; ++k) {
-        const int g = m_.faceVertex(f, k);
-        sl[k] = s.slotStamp[g] == p ? s.slotOf[g] : -1;
-        hi = std::max(hi, sl[k] < 0 ? INFINITY : s.hi[sl[k]]);
+        const SlotRef& ref = s.ref[faceVerts_[3 * f + k]];
+        const bool reached = ref.stamp == p;
+        row[k] = reached ? &s.dist[kLanes * static_cast<size_t>(ref.slot)] : unreached_.data();
+        hi = std::max(hi, reached ? s.hi[ref.slot] : INFINITY);
       }
       if (hi < radius_) {
-        common.smooth += ctx_.face[f].integral;
-        common.absoluteScale += ctx_.face[f].absIntegral;
+        common.smooth += faceIntegral_[f];
+        common.absoluteScale += faceAbs_[f];
         continue;
       }
-      for (int c = 0; c < lanes; ++c) {
-        double d[3];
-        for (int k = 0; k < 3; ++k) d[k] = sl[k] < 0 ? INFINITY : s.dist[sl[k]][c];
-        ctx_.addFace(f, d, radius_, lane[c]);
+      const double w = faceIntegral_[f], wa = faceAbs_[f];
+      const LaneQuad whole = {w, w, w, w}, wholeAbs = {wa, wa, wa, wa};
+      for (int c = 0; c < kLanes; c += 4) {
+        LaneQuad d0, d1, d2, sm, sc;
+        std::memcpy(&d0, row[0] + c, sizeof d0);
+        std::memcpy(&d1, row[1] + c, sizeof d1);
+        std::memcpy(&d2, row[2] + c, sizeof d2);
+        std::memcpy(&sm, &smooth[c], sizeof sm);
+        std::memcpy(&sc, &scale[c], sizeof sc);
+        const auto inside = (d0 < r) + (d1 < r) + (d2 < r);  // −(number of vertices inside), per lane
+        sm = inside == -3 ? sm + whole : sm;
+        sc = inside == -3 ? sc + wholeAbs : sc;
+        std::memcpy(&smooth[c], &sm, sizeof sm);
+        std::memcpy(&scale[c], &sc, sizeof sc);
+        const auto cut = (inside != 0) & (inside != -3);
+        for (int j = 0; j < 4; ++j) {
+          if (!cut[j] || c + j >= lanes) continue;
+          const int lc = c + j;
+          const double d[3] = {row[0][lc], row[1][lc], row[2][lc]};
+          RegionCurvatureMeasure out{0, smooth[lc], scale[lc]};
+          MeasureContext::addFaceShare(faceDensity_[f], d, radius_, out);
+          smooth[lc] = out.smooth, scale[lc] = out.absoluteScale;
+        }
       }
     }
+    for (int c = 0; c < kLanes; ++c) lane[c].smooth = smooth[c], lane[c].absoluteScale = scale[c];
   }
 
   const MeasureContext& ctx_;
   const HalfedgeMesh& m_;
   double radius_, reach_ = 0;
-  Neighbours nbr_;
   std::vector<int> patchStart_, centres_;  // patch p's centres: centres_[patchStart_[p], patchStart_[p+1])
+  // The sweep numbering (the class comment): vertex i is mesh vertex centres_[i], newOf_ the inverse.
+  std::vector<int> newOf_, adjStart_, adjTo_;
+  std::vector<double> adjLen_, atom_;
+  std::vector<char> boundary_;                  // boundary vertex with boundary terms
+  std::vector<int> fanStart_, fanFaces_;        // per vertex, its faces in fan order (sweep face numbers)
+  std::vector<int> faceOld_, faceVerts_;        // sweep face → mesh face; its three vertices
+  std::vector<double> faceIntegral_, faceAbs_;  // ∫K dA and ∫|K| dA over the face's image
+  std::vector<FaceDensity> faceDensity_;        // for the faces a rim cuts
+  std::array<double, kLanes> unreached_;        // the lanes of a vertex the patch never reached: all ∞
   mutable std::mutex poolMutex_;
   mutable std::vector<std::unique_ptr<Scratch>> pool_;
 };
@@ -813,7 +970,8 @@ std::string CurvatureMeasureOptions::validate() const {
   if (sampleCentres < 0)
     return "curvature measure: the number of sampled centres must be 0 (every vertex) or positive, found " +
            std::to_string(sampleCentres);
-  if (histogramBins < 1) return "curvature measure: expected at least one histogram bin, found " + std::to_string(histogramBins);
+  if (histogramBins < 1)
+    return "curvature measure: expected at least one histogram bin, found " + std::to_string(histogramBins);
   if (!(histogramRange > 0))
     return "curvature measure: the histogram range must be positive, found " + std::to_string(histogramRange);
   return "";
@@ -867,8 +1025,7 @@ void summarize(const std::vector<int>& centres, int nV, const CurvatureMeasureOp
   r.fractionWithinBand = static_cast<double>(within) / n;
   if (n < nV && n > 1) {
     const double variance = std::max(0.0, (sumSq - n * r.meanAbsoluteError * r.meanAbsoluteError) / (n - 1));
-    r.meanAbsoluteErrorHalfWidth =
-        1.96 * std::sqrt(variance / n) * std::sqrt(static_cast<double>(nV - n) / (nV - 1));
+    r.meanAbsoluteErrorHalfWidth = 1.96 * std::sqrt(variance / n) * std::sqrt(static_cast<double>(nV - n) / (nV - 1));
   }
 }
 

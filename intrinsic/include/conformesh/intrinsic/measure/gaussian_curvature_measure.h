@@ -47,8 +47,8 @@ enum class MeasureRegion {
 // ball's number of terms and u = 2⁻⁵³.
 enum class BallSweepAlgorithm {
   // Patches of 16 neighbouring centres share one label-correcting Dijkstra whose 16 distance fields are carried side
-  // by side, and the terms inside every ball of a patch are added once (the default; 1.7× less CPU at 48k vertices,
-  // 3.9× at 125k: docs/benchmarks.md). Still O(V²).
+  // by side, and the terms inside every ball of a patch are added once (the default; several times less CPU than
+  // BallByBall from 10⁵ vertices on: docs/benchmarks.md). Still O(V²).
   Patches,
   // One Dijkstra per centre, the earlier algorithm, kept as the reference the tests compare with.
   BallByBall
