@@ -3,8 +3,6 @@
 #include "conformesh/intrinsic/metric/metric_quadrature.h"
 
 #include <cmath>
-#include <map>
-#include <mutex>
 #include <queue>
 #include <sstream>
 
@@ -44,7 +42,12 @@ const GaussLegendreRule& gaussLegendreRule(int n) {
   // under OpenMP threads (C++11 [stmt.dcl]/4).
   static const std::vector<GaussLegendreRule> rules = [] {
     std::vector<GaussLegendreRule> r(65);
-    for (int k = 1; k <= 64; ++k) gaussLegendre(k, r[k].nodes, r[k].weights);
+    for (int k = 1; k <= 64; ++k) {
+      GaussLegendreRule& g = r[k];
+      gaussLegendre(k, g.nodes, g.weights);
+      for (double x : g.nodes) g.unitNodes.push_back(0.5 * (x + 1));
+      for (double w : g.weights) g.unitWeights.push_back(w * 0.5);
+    }
     return r;
   }();
   return rules[n];
@@ -64,23 +67,6 @@ const double GaussKronrod15::gaussWeights[4] = {
 
 namespace {
 
-struct Rule {
-  std::vector<double> x, w;  // on [0, 1]
-};
-
-const Rule& ruleOf(int n) {
-  static std::map<int, Rule> cache;
-  static std::mutex mutex;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto it = cache.find(n);
-  if (it != cache.end()) return it->second;
-  Rule r;
-  gaussLegendre(n, r.x, r.w);
-  for (double& x : r.x) x = 0.5 * (x + 1);
-  for (double& w : r.w) w *= 0.5;
-  return cache.emplace(n, r).first->second;
-}
-
 // A cell is a rectangle or a triangle in the chart; both are images of the unit square.
 struct Cell {
   bool triangle = false;
@@ -88,13 +74,15 @@ struct Cell {
   // rectangle: a = (u0,v0), b = (u1,v1) (c unused); triangle: corners
 };
 
-double applyRule(const ChartFunction& f, const Cell& cell, const Rule& r, long& evals) {
+double applyRule(const ChartFunction& f, const Cell& cell, const GaussLegendreRule& r, long& evals) {
   double sum = 0;
-  const int n = static_cast<int>(r.x.size());
+  const int n = static_cast<int>(r.unitNodes.size());
   if (!cell.triangle) {
     const Eigen::Vector2d d = cell.b - cell.a;
     for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) sum += r.w[i] * r.w[j] * f(cell.a.x() + r.x[i] * d.x(), cell.a.y() + r.x[j] * d.y());
+      for (int j = 0; j < n; ++j)
+        sum += r.unitWeights[i] * r.unitWeights[j] *
+               f(cell.a.x() + r.unitNodes[i] * d.x(), cell.a.y() + r.unitNodes[j] * d.y());
     evals += n * n;
     return sum * d.x() * d.y();
   }
@@ -103,9 +91,9 @@ double applyRule(const ChartFunction& f, const Cell& cell, const Rule& r, long& 
   const double det = e1.x() * e2.y() - e1.y() * e2.x();
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      const double s = r.x[i], t = r.x[j];
+      const double s = r.unitNodes[i], t = r.unitNodes[j];
       const Eigen::Vector2d p = cell.a + s * ((1 - t) * e1 + t * e2);
-      sum += r.w[i] * r.w[j] * s * f(p.x(), p.y());
+      sum += r.unitWeights[i] * r.unitWeights[j] * s * f(p.x(), p.y());
     }
   evals += n * n;
   return sum * det;  // signed: callers that want a measure take the orientation into account
@@ -138,7 +126,8 @@ struct Node {
   bool operator<(const Node& o) const { return err < o.err; }
 };
 
-Node makeNodeByRule(const ChartFunction& f, const Cell& cell, double q, int depth, const Rule& r, long& evals) {
+Node makeNodeByRule(const ChartFunction& f, const Cell& cell, double q, int depth, const GaussLegendreRule& r,
+                    long& evals) {
   Node n;
   n.cell = cell;
   n.depth = depth;
@@ -174,7 +163,7 @@ Node makeNodeByRule(const ChartFunction& f, const Cell& cell, double q, int dept
 // Optional lower bound on a cell's error that the rule cannot see (a region boundary crossing the cell).
 using ErrorFloor = std::function<double(const Cell&)>;
 
-Node makeNode(const ChartFunction& f, const Cell& cell, double q, int depth, const Rule& r, long& evals,
+Node makeNode(const ChartFunction& f, const Cell& cell, double q, int depth, const GaussLegendreRule& r, long& evals,
               const ErrorFloor& floor) {
   Node n = makeNodeByRule(f, cell, q, depth, r, evals);
   if (floor) {
@@ -189,7 +178,7 @@ Node makeNode(const ChartFunction& f, const Cell& cell, double q, int depth, con
 // estimate meets the tolerance, the depth limit leaves nothing to split, or the evaluation budget is spent.
 QuadratureResult integrateCells(const ChartFunction& f, const std::vector<Cell>& cells, const QuadratureOptions& o,
                                 const std::string& what, const ErrorFloor& floor = {}) {
-  const Rule& r = ruleOf(o.gaussPoints);
+  const GaussLegendreRule& r = gaussLegendreRule(o.gaussPoints);
   long evals = 0;
   std::priority_queue<Node> open;
   std::vector<Node> done;  // at the depth limit

@@ -46,9 +46,11 @@ struct QuadratureResult {
 void gaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights);
 
 // The same rule, computed once per n on first use (thread-safe) and kept for the process: what per-call users (every
-// output edge's length) read instead of recomputing the nodes. Throws InputError outside 1..64.
+// output edge's length, every cell of integrateOverRectangle/Triangle) read instead of recomputing the nodes; also
+// mapped to [0, 1] (x ↦ (x + 1)/2, w ↦ w/2) for the cell rules. Throws InputError outside 1..64.
 struct GaussLegendreRule {
-  std::vector<double> nodes, weights;  // on [−1, 1]
+  std::vector<double> nodes, weights;          // on [−1, 1]
+  std::vector<double> unitNodes, unitWeights;  // on [0, 1]
 };
 const GaussLegendreRule& gaussLegendreRule(int n);
 
