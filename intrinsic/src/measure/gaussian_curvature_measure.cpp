@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <exception>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -217,30 +216,16 @@ struct MeasureContext {
   }
 
   // face[f] for every face, on two cores (each face is written by one chunk; the metric is read only). An exception
-  // in a chunk is rethrown here, the lowest chunk's, as a serial loop would have thrown the first.
+  // in a chunk is rethrown here, the lowest chunk's, as a serial loop would have thrown the first (two_threads.h).
   void sampleFaces(const ChartFunction& kDensity) {
     face.resize(m.nFaces());
-    constexpr int kChunks = 8;
-    std::exception_ptr failed[kChunks];
-    const std::ptrdiff_t nF = m.nFaces();
-    auto chunk = [&](int c) {
-      try {
-        const int f0 = static_cast<int>(nF * c / kChunks), f1 = static_cast<int>(nF * (c + 1) / kChunks);
-        for (int f = f0; f < f1; ++f) {
-          const Eigen::Vector3d& a = ref[m.faceVertex(f, 0)];
-          face[f] = sampleFace(domain, kDensity, a, unwrapNear(domain, a, ref[m.faceVertex(f, 1)]),
-                               unwrapNear(domain, a, ref[m.faceVertex(f, 2)]));
-        }
-      } catch (...) {
-        failed[c] = std::current_exception();
+    onTwoCores(m.nFaces(), kParallelMin, [&](std::ptrdiff_t f0, std::ptrdiff_t f1) {
+      for (int f = static_cast<int>(f0); f < f1; ++f) {
+        const Eigen::Vector3d& a = ref[m.faceVertex(f, 0)];
+        face[f] = sampleFace(domain, kDensity, a, unwrapNear(domain, a, ref[m.faceVertex(f, 1)]),
+                             unwrapNear(domain, a, ref[m.faceVertex(f, 2)]));
       }
-    };
-    if (nF < kParallelMin)
-      for (int c = 0; c < kChunks; ++c) chunk(c);
-    else
-      runChunks(kChunks, chunk);
-    for (const std::exception_ptr& e : failed)
-      if (e) std::rethrow_exception(e);
+    });
   }
 
   // The faces around every vertex in the order the halfedge fan walk (vertexHalfedge, nextOutgoing) visits them.

@@ -16,6 +16,8 @@ constexpr std::ptrdiff_t kParallelMin = 20000;
 // every chunk itself, never slower than one thread (docs/ricci_flow.md §2, "Two cores elsewhere"). Results do not
 // depend on which thread runs a chunk as long as chunks write disjoint data. Calls from several threads at once, or
 // from inside a chunk, run serially.
+// Throws: what a chunk threw — once every chunk already started has finished, the exception of the lowest-numbered
+// chunk that threw, which is what the serial loop would throw; chunks not yet started when one throws are not run.
 void runChunks(int count, const std::function<void(int)>& chunk);
 
 // body(begin, end) over [0, n) in 8 fixed ranges shared by runChunks (one range below `minimum`): each index belongs to
