@@ -16,6 +16,7 @@
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/triangle_geometry.h"
 #include "flow/disk_double.h"
+#include "flow/inscribed_disk.h"
 #include "flow/sphere_puncture.h"
 #include "flow/uniformization_support.h"
 
@@ -178,95 +179,6 @@ BoundaryLoops boundaryLoopsOf(const IntrinsicTriangulation& input) {
   return loops;
 }
 
-// Breadth-first face distances from `from` across interior edges; the last face reached is returned in `farthest`.
-std::vector<int> dualDistances(const HalfedgeMesh& m, int from, int& farthest) {
-  std::vector<int> dist(m.nFaces(), -1), queue{from};
-  dist[from] = 0;
-  for (std::size_t i = 0; i < queue.size(); ++i)
-    for (int k = 0; k < 3; ++k) {
-      const int twin = m.twin(HalfedgeMesh::halfedge(queue[i], k));
-      if (twin == kInvalid || dist[HalfedgeMesh::face(twin)] >= 0) continue;
-      dist[HalfedgeMesh::face(twin)] = dist[queue[i]] + 1;
-      queue.push_back(HalfedgeMesh::face(twin));
-    }
-  farthest = queue.back();
-  return dist;
-}
-
-// The middle face of a longest path of the dual tree: developing from it halves the depth of the recursion below,
-// whose round-off grows geometrically along a strip (measured on boeing.off's 14-vertex strips: ≈ ×3 per face).
-int dualTreeCentre(const HalfedgeMesh& m) {
-  int p = 0, q = 0;
-  dualDistances(m, 0, p);
-  const std::vector<int> fromP = dualDistances(m, p, q);
-  int ignored = 0;
-  const std::vector<int> fromQ = dualDistances(m, q, ignored);
-  for (int f = 0; f < m.nFaces(); ++f)
-    if (fromP[f] + fromQ[f] == fromP[q] && 2 * fromP[f] >= fromP[q] && 2 * fromP[f] <= fromP[q] + 1) return f;
-  return 0;
-}
-
-// A disk whose vertices all lie on its boundary (a triangulated polygon: 1, 2, … faces) has a 3-parameter family of
-// circle-domain solutions (scale and the disk automorphisms modulo rotations) filling a 3-dimensional set that the
-// flow's Jacobian sees only as a kernel of dimension 2 beyond the pinned scale: Newton from a start with a tiny
-// residual steps along it (a triangle is inscribed already at u = 0). Its dual graph is a tree (F faces, F − 1
-// interior edges), so the solution is developed directly: face 0 keeps u = 0 and fixes the circle; across an interior
-// edge ab of a placed face (a, b, c) the new vertex d must lie on the other arc of ab, where the inscribed angles of
-// triangle abd at a and b (α + β = γ_c, the angle at c) satisfy sin β / sin α = ρ = ℓ_ad/ℓ_bd, which does not depend
-// on u_d. Hence cot α = (ρ + cos γ_c)/sin γ_c and 2R sin α = e^{(u_b+u_d)/2} ℓ⁰_bd gives u_d.
-void inscribeDiskWithoutInterior(DiscreteConformalMetric& metric) {
-  const HalfedgeMesh& m = metric.mesh();
-  std::vector<double>& u = metric.u();
-  std::fill(u.begin(), u.end(), 0.0);
-  std::vector<char> placed(m.nVertices(), 0), visited(m.nFaces(), 0);
-  const int root = dualTreeCentre(m);
-  for (int k = 0; k < 3; ++k) placed[m.faceVertex(root, k)] = 1;
-  const double a0 = metric.length(m.edge(HalfedgeMesh::halfedge(root, 0)));
-  const double b0 = metric.length(m.edge(HalfedgeMesh::halfedge(root, 1)));
-  const double c0 = metric.length(m.edge(HalfedgeMesh::halfedge(root, 2)));
-  const double radius = circumradius(Background::Euclidean, a0, b0, c0);
-  std::vector<int> queue{root};
-  visited[root] = 1;
-  for (std::size_t next = 0; next < queue.size(); ++next) {
-    const int f = queue[next];
-    for (int k = 0; k < 3; ++k) {
-      const int hab = HalfedgeMesh::halfedge(f, k), twin = m.twin(hab);
-      if (twin == kInvalid || visited[HalfedgeMesh::face(twin)]) continue;
-      const int a = m.tail(hab), b = m.tip(hab);
-      const int hbc = HalfedgeMesh::next(hab), hca = HalfedgeMesh::next(hbc);
-      // The angle at c, opposite ab, in the placed face.
-      const double gammaC = angleOpposite(Background::Euclidean, metric.length(m.edge(hab)), metric.length(m.edge(hbc)),
-                                          metric.length(m.edge(hca)));
-      // In the new face (b, a, d): halfedges twin = ba, then ad, then db.
-      const int had = HalfedgeMesh::next(twin), hdb = HalfedgeMesh::next(had);
-      const int d = m.tip(had);
-      if (placed[d])
-        throw ConvergenceError("uniformize: disk without interior vertices: vertex " + std::to_string(d) +
-                               " is reached twice, the faces do not form a triangulated polygon");
-      const double rho =
-          std::exp(0.5 * (u[a] - u[b])) * metric.referencePenner(m.edge(had)) / metric.referencePenner(m.edge(hdb));
-      const double alpha = std::atan2(std::sin(gammaC), rho + std::cos(gammaC));
-      u[d] = 2 * std::log(2 * radius * std::sin(alpha) / metric.referencePenner(m.edge(hdb))) - u[b];
-      placed[d] = 1;
-      visited[HalfedgeMesh::face(twin)] = 1;
-      queue.push_back(HalfedgeMesh::face(twin));
-    }
-  }
-  // A long strip crowds its ends exponentially (a rectangle L × w: chords ~ e^{−πL/2w} of the diameter), and the
-  // development's relative error grows as its chords shrink: boeing.off's 14-vertex strips of aspect ≈ 19 reach
-  // triangles 2 % outside the triangle inequality at chords of 2·10⁻⁴ diameters. Such a development is refused.
-  double shortest = std::numeric_limits<double>::infinity();
-  for (int e = 0; e < m.nEdges(); ++e) shortest = std::min(shortest, metric.length(e) / (2 * radius));
-  if (!metric.allFacesValid()) {
-    std::ostringstream message;
-    message.precision(3);
-    message << "uniformize: disk without interior vertices: its development onto the circle is not resolved in double "
-               "precision (a face violates the triangle inequality; shortest finite chord "
-            << shortest << " diameters): a long strip, whose circle domain crowds its ends exponentially";
-    throw ConvergenceError(message.str());
-  }
-}
-
 // u for a disk from the sphere of its double (disk_double.h): the double's total scaling w (λ = −w) plus the factor of
 // the stereographic projection from the mirror pole p onto the equatorial plane, |σx − σy| = 2|x − y|/(|x − p||y − p|)
 // (an inversion of radius √2 centred at p: vertex scaling is Möbius invariant, BPS 2015), so u = w + log 2 − 2 log|x −
@@ -328,14 +240,16 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
   if (loopTips.size() == 1 && !interior) {
     // Developed onto its circle directly; the flow below then only polishes the round-off (0 Newton steps when below
     // the tolerance, as for every polygon of up to 8 vertices in boeing.off).
-    inscribeDiskWithoutInterior(metric);
+    detail::inscribeDiskWithoutInterior(metric);
     if (options.progress) options.progress("circle domain: no interior vertex, developed onto its circle");
   }
   RicciFlowReport flow;
   try {
     flow = solveConformalFlow(metric, target, withProgress(options, "circle domain"), &log);
   } catch (const ConvergenceError& failed) {
-    if (loopTips.size() != 1 || !interior) throw;
+    if (loopTips.size() == 1 && !interior)
+      throw detail::explainInscribedFailure(metric, withProgress(options, "").tolerance, failed);
+    if (loopTips.size() != 1) throw;
     // A disk: start again from its double's sphere, projected (docs/ricci_flow.md §3.3, "The double").
     if (options.progress)
       options.progress(std::string("circle domain: ") + failed.what() + "; restarting from the double");

@@ -1,0 +1,27 @@
+// inscribed_disk.h (private) — the circle domain of a disk whose vertices all lie on its boundary (a triangulated
+// polygon), developed face by face onto its circle by cross-ratios in quadruple precision instead of solved by the flow
+// (docs/ricci_flow.md §3.3, "Disks without interior vertices"). Writes the metric's u only.
+#pragma once
+
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/flow/discrete_conformal.h"
+
+namespace conformesh::intrinsic::detail {
+
+// Sets metric.u() (Euclidean background) so that every vertex lies on the unit circle: the development starts from the
+// middle face of a longest dual path; each further face's new vertex is placed on the other arc of the edge it is
+// reached across. Each face must be reached exactly once (the dual graph of a triangulated polygon is a tree).
+// Throws ConvergenceError when a vertex is reached twice (not a triangulated polygon), or when a face is outside the
+// triangle inequality once its lengths are rounded to double (a strip so long that its circle domain's chords are
+// below what double-precision lengths resolve, ≈ 10⁻⁸ diameters; the message gives the shortest chord).
+void inscribeDiskWithoutInterior(DiscreteConformalMetric& metric);
+
+// When the flow's polish of such a development fails: `failed` with the reason added if it is round-off — the
+// smallest corner angle θ of the developed disk (at `metric`'s u) makes double's error in the angle sums ≈ ε/θ
+// (ε = 2.2·10⁻¹⁶; the corners near π of a crowded end move by that under a relative length change ε), and if that is
+// within a factor 100 of `tolerance` the message says that the strip is too long to be resolved to the tolerance in
+// double precision. Otherwise `failed` unchanged.
+ConvergenceError explainInscribedFailure(const DiscreteConformalMetric& metric, double tolerance,
+                                         const ConvergenceError& failed);
+
+}  // namespace conformesh::intrinsic::detail
