@@ -1,5 +1,5 @@
-// inscribed_disk.cpp — the development of a triangulated polygon onto its circle (inscribed_disk.h), generic in the
-// floating-point type: double first, Boost.Multiprecision's 113-bit cpp_bin_float_quad (header-only) as the fallback.
+// inscribed_disk.cpp — the development of a triangulated polygon onto its circle (inscribed_disk.h), by cross-ratios
+// in Boost.Multiprecision's 113-bit cpp_bin_float_quad (header-only); only the factors u are rounded to double.
 #include "flow/inscribed_disk.h"
 
 #include <algorithm>
@@ -35,8 +35,8 @@ std::vector<int> dualDistancesFrom(const HalfedgeMesh& m, int from, int& farthes
   return dist;
 }
 
-// The middle face of a longest path of the dual tree: developing from it halves the depth of the recursion below,
-// whose round-off grows geometrically along a strip (measured on boeing.off's 14-vertex strips: ≈ ×3 per face).
+// The middle face of a longest path of the dual tree: developed from it, a strip's two crowded ends share the circle
+// evenly (a Möbius map that spreads one end crowds the other, and the ends' chords set what double resolves).
 int dualTreeCentre(const HalfedgeMesh& m) {
   int p = 0, q = 0;
   dualDistancesFrom(m, 0, p);
@@ -49,7 +49,9 @@ int dualTreeCentre(const HalfedgeMesh& m) {
 }
 
 // The Euclidean angle opposite side a by the half-angle formula with Kahan's ordering (sides sorted, differences
-// formed before halving), accurate also near 0 and π. Requires a valid triangle.
+// formed before halving), accurate also near 0 and π. Requires a valid triangle. (triangle_geometry.h's angleOpposite
+// in Quad: the root face's corners placed to double's accuracy instead tip one of boeing.off's strips at the round-off
+// floor from through to refused.)
 Quad angleOppositeQuad(const Quad& a, const Quad& b, const Quad& c) {
   const Quad* side[3] = {&a, &b, &c};
   int idx[3] = {0, 1, 2};

@@ -248,7 +248,7 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
     flow = solveConformalFlow(metric, target, withProgress(options, "circle domain"), &log);
   } catch (const ConvergenceError& failed) {
     if (loopTips.size() == 1 && !interior)
-      throw detail::explainInscribedFailure(metric, withProgress(options, "").tolerance, failed);
+      throw detail::explainInscribedFailure(metric, options.flow.tolerance, failed);
     if (loopTips.size() != 1) throw;
     // A disk: start again from its double's sphere, projected (docs/ricci_flow.md §3.3, "The double").
     if (options.progress)
