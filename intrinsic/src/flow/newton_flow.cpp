@@ -13,11 +13,13 @@
 #include <vector>
 
 #include "conformesh/intrinsic/errors.h"
+#include "flow/extended_angles.h"
 
 namespace conformesh::intrinsic {
 
 using detail::angleJacobian;
 using detail::evaluateFaces;
+using detail::extendedAngleSums;
 
 NewtonFlowSolver::NewtonFlowSolver(DiscreteConformalMetric& metric, const ConformalTarget& target,
                                    const RicciFlowOptions& options, FlowCorrespondence* log)
@@ -453,7 +455,13 @@ double NewtonFlowSolver::lineSearch(const Eigen::VectorXd& delta, NewtonStepInfo
       switchOnGaugeAtStall(u0);
       break;
     }
-    if (t < options_.minStep) throwStalled(u0, info);
+    if (t < options_.minStep) {
+      if (polishInExtendedPrecision(u0)) {
+        t = 1;  // full refinement steps
+        break;
+      }
+      throwStalled(u0, info);
+    }
   }
   return t;
 }
@@ -547,6 +555,50 @@ void NewtonFlowSolver::switchOnGaugeAtStall(const std::vector<double>& u0) {
   for (int k = 0; k < 2; ++k) gaugeTarget_[k] = gaugeAngle(k);
   evaluateResidual(maxAbs_, norm2_);
   patternValid_ = false;
+}
+
+// The precision fallback (docs/ricci_flow.md §2 "Where double precision runs out"): at a stall with max |r| below
+// kPolishBelow, Newton by iterative refinement — the residual in long double at u + du (extendedAngleSums), the
+// correction from the double Hessian of the stall point (symmetricNewtonStep, no flips: the corrections are at
+// round-off size), du accumulated in long double. Accepted when max |r| reaches the tolerance within kPolishSteps
+// steps, each reducing it at least by half; then u is rounded to double and the residual reported is the extended one.
+// Otherwise u is restored and the stall is reported as before. Euclidean problems without circle loops only.
+bool NewtonFlowSolver::polishInExtendedPrecision(const std::vector<double>& u0) {
+  constexpr double kPolishBelow = 1e-5;
+  constexpr int kPolishSteps = 8;
+  if (bg_ != Background::Euclidean || circles_) return false;
+  restoreStart(u0);
+  report_.flips += metric_.makeDelaunay(options_.delaunayTolerance, log_);
+  evaluateResidual(maxAbs_, norm2_);
+  if (!(maxAbs_ <= kPolishBelow)) return false;
+  std::vector<long double> du(nV_, 0.0L), sums;
+  long double previous = std::numeric_limits<long double>::infinity();
+  for (int step = 0; step <= kPolishSteps; ++step) {
+    extendedAngleSums(metric_, du, sums);
+    long double maxAbs = 0;
+    for (int v : equations_) {
+      const long double rv = static_cast<long double>(targetSum_[v]) - sums[v];
+      maxAbs = std::max(maxAbs, std::abs(rv));
+      if (index_[v] >= 0) r_[index_[v]] = static_cast<double>(rv);
+    }
+    if (!(maxAbs < 0.5L * previous)) break;
+    previous = maxAbs;
+    maxAbs_ = static_cast<double>(maxAbs);
+    norm2_ = r_.squaredNorm();
+    if (maxAbs_ <= report_.effectiveTolerance) {
+      for (int v = 0; v < nV_; ++v) {
+        metric_.u()[v] = static_cast<double>(static_cast<long double>(metric_.u()[v]) + du[v]);
+        work_->sums[v] = static_cast<double>(sums[v]);
+      }
+      report_.extendedPolishSteps = step;
+      return true;
+    }
+    const Eigen::VectorXd delta = symmetricNewtonStep();
+    for (int i = 0; i < n_; ++i) du[unknowns_[i]] += delta[i];
+  }
+  restoreStart(u0);
+  evaluateResidual(maxAbs_, norm2_);
+  return false;
 }
 
 void NewtonFlowSolver::throwStalled(const std::vector<double>& u0, const NewtonStepInfo& info) {

@@ -71,6 +71,7 @@ class NewtonFlowSolver {
   void restoreStart(const std::vector<double>& u0);
   bool stopAtDegenerateStart(const std::vector<double>& u0);
   void switchOnGaugeAtStall(const std::vector<double>& u0);
+  bool polishInExtendedPrecision(const std::vector<double>& u0);  // true: converged in extended precision
   [[noreturn]] void throwStalled(const std::vector<double>& u0, const NewtonStepInfo& info);
 
   // --- stopping tests

@@ -187,7 +187,14 @@ bool SpherePuncture::clearlyReflex(int a, const std::vector<double>& sums, doubl
 
 SphereAttempt SpherePuncture::solveAndRepairStar() {
   for (int round = 0;; ++round) {
-    const RicciFlowReport solved = solveConformalFlow(metric_, target_, flow_, &log_);
+    RicciFlowReport solved;
+    try {
+      solved = solveConformalFlow(metric_, target_, flow_, &log_);
+    } catch (const ConvergenceError& e) {
+      // A flow that fails for this puncture (a stall, the step cap) rejects the puncture like a failed layout or
+      // sphere check: another star gives another Dirichlet problem (docs/ricci_flow.md §3.1).
+      return {false, e.what()};
+    }
     accumulate(report_, solved);
     // Early returns at a stall only until the first solve gets past its degenerate faces: afterwards reflex repairs
     // take vertices out of the link, and stopping the next solve at a degenerate face would put them straight back.

@@ -75,8 +75,8 @@ struct RicciFlowOptions {
   // Optional: share the factor with other solves (makeFlowSolverCache). Dirichlet vertices then stay unknowns with
   // identity rows, so that changes of the Dirichlet set keep the dimension. Ignored for circle loops.
   std::shared_ptr<FlowSolverCache> solverCache;
-  // Armijo constant on the merit ½|r|² and on the energy (0 < armijo < 0.5) and the smallest step length before giving up
-  // (0 < minStep ≤ 1).
+  // Armijo constant on the merit ½|r|² and on the energy (0 < armijo < 0.5) and the smallest step length before giving
+  // up (0 < minStep ≤ 1).
   double armijo = 1e-4;
   double minStep = 1e-12;
   // Delaunay tolerance of the Penner flips (see pennerDelaunayMargin): 1e-12 leaves cocircular quads alone.
@@ -113,6 +113,9 @@ struct RicciFlowReport {
   bool stoppedByCaller = false;      // returned early because stopAfterStep said so (not converged)
   std::vector<double> angleSums;     // Θ per vertex over the non-frozen faces at exit (as flowAngleSums)
   bool nestedDissection = false;     // the last analysis used SCOTCH nested dissection (nestedDissectionMin)
+  // Refinement steps of the precision fallback (0: not used): double stalled at round-off, the residual was evaluated
+  // in long double and maxResidual/angleSums are those of the extended-precision u, which u rounds (ricci_flow.md §2).
+  int extendedPolishSteps = 0;
 };
 
 // Solves for u from the current one: on return `metric` has the flow's u and Delaunay connectivity, `log` (may be null)
