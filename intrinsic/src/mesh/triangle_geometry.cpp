@@ -35,24 +35,6 @@ Background backgroundFromString(const std::string& name, const std::string& sour
       describeAt(source, "unknown background geometry '" + name + "': expected euclidean, spherical or hyperbolic"));
 }
 
-HalfPerimeter halfPerimeter(double a, double b, double c) {
-  // Sort descending while remembering which side is which: three compare-and-swaps (every angle goes through here).
-  const double v[3] = {a, b, c};
-  int idx[3] = {0, 1, 2};
-  auto order = [&](int i, int j) {
-    if (v[idx[i]] < v[idx[j]]) std::swap(idx[i], idx[j]);
-  };
-  order(0, 1);
-  order(1, 2);
-  order(0, 1);
-  const double x = v[idx[0]], y = v[idx[1]], z = v[idx[2]];
-  double diff[3];
-  diff[idx[0]] = 0.5 * (z - (x - y));
-  diff[idx[1]] = 0.5 * (z + (x - y));
-  diff[idx[2]] = 0.5 * (x + (y - z));
-  return {0.5 * (x + (y + z)), diff[0], diff[1], diff[2]};
-}
-
 bool isValidTriangle(Background g, double a, double b, double c) {
   if (!(std::isfinite(a) && std::isfinite(b) && std::isfinite(c))) return false;
   if (!(a > 0 && b > 0 && c > 0)) return false;
