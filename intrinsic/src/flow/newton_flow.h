@@ -70,6 +70,7 @@ class NewtonFlowSolver {
   std::string worstVertex() const;  // "vertex v (Θ̂ − Θ = …)" at the last evaluated point
   void restoreStart(const std::vector<double>& u0);
   bool stopAtDegenerateStart(const std::vector<double>& u0);
+  bool crawlsAlongMoebiusKernel(double t) const;
   void switchOnGaugeAtStall(const std::vector<double>& u0);
   bool polishInExtendedPrecision(const std::vector<double>& u0);  // true: converged in extended precision
   [[noreturn]] void throwStalled(const std::vector<double>& u0, const NewtonStepInfo& info);
