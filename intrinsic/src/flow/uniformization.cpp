@@ -16,6 +16,7 @@
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/triangle_geometry.h"
 #include "flow/disk_double.h"
+#include "flow/geodesic_half.h"
 #include "flow/inscribed_disk.h"
 #include "flow/sphere_puncture.h"
 #include "flow/uniformization_support.h"
@@ -80,6 +81,8 @@ using detail::withProgress;
 
 Uniformization uniformizeConstant(const IntrinsicTriangulation& input, const UniformizationOptions& options,
                                   UniformizationReport report, Background geometry);
+Uniformization uniformizeGeodesicBoundary(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                          const UniformizationReport& report, Background geometry);
 
 // === circle domains (genus 0 with boundary)
 
@@ -223,7 +226,7 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
         options.progress(line.str());
       }
       report.target = UniformizationTarget::FlatCylinder;
-      return uniformizeConstant(input, options, report, Background::Euclidean);
+      return uniformizeGeodesicBoundary(input, options, report, Background::Euclidean);
     }
   }
   ConformalTarget target;
@@ -249,6 +252,18 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
   } catch (const ConvergenceError& failed) {
     if (loopTips.size() == 1 && !interior)
       throw detail::explainInscribedFailure(metric, options.flow.tolerance, failed);
+    if (loopTips.size() == 2) {
+      // An annulus: its flat cylinder, the same conformal class by z = e^{w}, with geodesic ends — through the double
+      // where a boundary edge would have to flip (docs/ricci_flow.md §3.4).
+      if (options.progress)
+        options.progress(std::string("circle domain: ") + failed.what() + "; target the flat cylinder");
+      report.target = UniformizationTarget::FlatCylinder;
+      try {
+        return uniformizeGeodesicBoundary(input, options, report, Background::Euclidean);
+      } catch (const ConvergenceError& again) {
+        throw ConvergenceError(std::string(failed.what()) + "; the flat cylinder: " + again.what());
+      }
+    }
     if (loopTips.size() != 1) throw;
     // A disk: start again from its double's sphere, projected (docs/ricci_flow.md §3.3, "The double").
     if (options.progress)
@@ -292,7 +307,7 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
             "annulus: the circle domain's layout does not resolve the inner circle to 1e-8; target the "
             "flat cylinder");
       report.target = UniformizationTarget::FlatCylinder;
-      return uniformizeConstant(input, options, report, Background::Euclidean);
+      return uniformizeGeodesicBoundary(input, options, report, Background::Euclidean);
     }
     if (!(deviation <= kMaxLoopCircleDeviation)) {
       std::ostringstream message;
@@ -312,6 +327,29 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
 }
 
 // === flat tori and hyperbolic surfaces (no boundary condition beyond the cone angles)
+
+// Every boundary vertex of a flat annulus with angle sums π there lies on one of two closed geodesics, the two ends of
+// a cylinder (circumference C, height H), which have one length. Checks that and returns log(2π/C), the shift of u
+// (lengths × e^{shift}) that makes C = 2π, so that H is Λ = log(R/r) of the circle domain e^{−H} < |z| < 1 that
+// z = e^{i(x + iy)} gives. Throws ConvergenceError when the two lengths differ by more than kMaxLoopCircleDeviation.
+double cylinderLogScale(const IntrinsicTriangulation& current) {
+  std::vector<double> loopLength;
+  for (const std::vector<int>& loop : current.mesh.boundaryLoops()) {
+    double length = 0;
+    for (int h : loop) length += current.length(h);
+    loopLength.push_back(length);
+  }
+  const double mismatch = std::abs(loopLength[0] - loopLength[1]) / std::max(loopLength[0], loopLength[1]);
+  if (!(mismatch <= kMaxLoopCircleDeviation)) {
+    std::ostringstream message;
+    message.precision(3);
+    message << "uniformize: flat cylinder: its two boundary geodesics have lengths " << loopLength[0] << " and "
+            << loopLength[1] << " (relative difference " << mismatch << " > " << kMaxLoopCircleDeviation
+            << "), which the two ends of a cylinder cannot have";
+    throw ConvergenceError(message.str());
+  }
+  return std::log(2 * M_PI / (0.5 * (loopLength[0] + loopLength[1])));
+}
 
 Uniformization uniformizeConstant(const IntrinsicTriangulation& input, const UniformizationOptions& options,
                                   UniformizationReport report, Background geometry) {
@@ -337,26 +375,7 @@ Uniformization uniformizeConstant(const IntrinsicTriangulation& input, const Uni
                                                                                                      : "flat torus"),
                          &log));
   if (report.target == UniformizationTarget::FlatCylinder) {
-    // Every boundary vertex has angle sum π: both loops are closed geodesics of a flat annulus, i.e. the two ends of a
-    // cylinder (circumference C, height H), which have one length. Check that, then scale to C = 2π, so that H is
-    // Λ = log(R/r) of the circle domain e^{−H} < |z| < 1 that z = e^{i(x + iy)} would give.
-    const IntrinsicTriangulation current = metric.triangulation();
-    std::vector<double> loopLength;
-    for (const std::vector<int>& loop : current.mesh.boundaryLoops()) {
-      double length = 0;
-      for (int h : loop) length += current.length(h);
-      loopLength.push_back(length);
-    }
-    const double mismatch = std::abs(loopLength[0] - loopLength[1]) / std::max(loopLength[0], loopLength[1]);
-    if (!(mismatch <= kMaxLoopCircleDeviation)) {
-      std::ostringstream message;
-      message.precision(3);
-      message << "uniformize: flat cylinder: its two boundary geodesics have lengths " << loopLength[0] << " and "
-              << loopLength[1] << " (relative difference " << mismatch << " > " << kMaxLoopCircleDeviation
-              << "), which the two ends of a cylinder cannot have";
-      throw ConvergenceError(message.str());
-    }
-    const double shift = std::log(2 * M_PI / (0.5 * (loopLength[0] + loopLength[1])));
+    const double shift = cylinderLogScale(metric.triangulation());
     for (double& x : metric.u()) x += shift;
     report.cylinderHeight = totalArea(metric.triangulation()) / (2 * M_PI);
   } else if (geometry == Background::Euclidean) {
@@ -372,6 +391,84 @@ Uniformization uniformizeConstant(const IntrinsicTriangulation& input, const Uni
   return out;
 }
 
+
+// === geodesic boundary through the double (docs/ricci_flow.md §3.4)
+
+void addSolveCounts(UniformizationReport& report, const UniformizationReport& solve) {
+  report.newtonSteps += solve.newtonSteps;
+  report.flips += solve.flips;
+  report.factorizations += solve.factorizations;
+  report.cgIterations += solve.cgIterations;
+  report.effectiveTolerance = std::max(report.effectiveTolerance, solve.effectiveTolerance);
+}
+
+// The target with geodesic boundary (hyperbolic, or the flat cylinder of an annulus) as the half of the double's
+// closed uniformization: the double (disk_double.h, any topology: genus 2g + b − 1) has no boundary, so every edge may
+// flip and the flow's existence theorem (Gu–Luo–Sun–Wu) covers it; its metric is mirror-symmetric, the input's boundary
+// — the mirror's fixed set — is a union of closed geodesics, and the half is the target (geodesic_half.h). Edges that
+// cross the mirror are halved there: boundary vertices inserted, located on the input's boundary through the double's
+// flip log (insertedVertices), λ of the vertex whose edge they halve (its mirror image has the same by symmetry).
+Uniformization geodesicBoundaryFromDouble(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                          UniformizationReport report, Background geometry) {
+  const detail::DiskDouble twin = detail::doubleDisk(input);
+  UniformizationOptions quiet = options;
+  if (options.progress) quiet.progress = [&options](const std::string& line) { options.progress("double: " + line); };
+  UniformizationReport closedReport;
+  closedReport.target =
+      geometry == Background::Hyperbolic ? UniformizationTarget::Hyperbolic : UniformizationTarget::FlatTorus;
+  const Uniformization closed = uniformizeConstant(twin.surface, quiet, closedReport, geometry);
+  const int n = input.mesh.nVertices();
+  detail::GeodesicHalf half =
+      detail::halveSymmetricDouble(closed.uniform, twin.mirror, n, closed.correspondence, twin.surface.mesh,
+                                   twin.diskFaces);
+  const std::vector<detail::BoundaryPoint> where =
+      detail::locateOnInputBoundary(input, twin.mirror, twin.surface.mesh, closed.uniform, closed.correspondence, half);
+  Uniformization out;
+  out.uniform = std::move(half.half);
+  out.lambda.assign(closed.lambda.begin(), closed.lambda.begin() + n);
+  for (std::size_t i = 0; i < half.splitFrom.size(); ++i) {
+    out.lambda.push_back(closed.lambda[half.splitFrom[i]]);
+    out.insertedVertices.push_back({n + static_cast<int>(i), where[i].inputEdge, where[i].parameter});
+  }
+  if (report.target == UniformizationTarget::FlatCylinder) {
+    const double shift = cylinderLogScale(out.uniform);
+    for (double& l : out.uniform.edgeLengths) l *= std::exp(shift);
+    for (double& l : out.lambda) l -= shift;
+    report.cylinderHeight = totalArea(out.uniform) / (2 * M_PI);
+  }
+  out.correspondence = FlowCorrespondence(0);
+  addSolveCounts(report, closed.report);
+  report.maxResidual = detail::maxGeodesicBoundaryResidual(out.uniform);
+  if (!(report.maxResidual <= std::max(options.flow.tolerance, report.effectiveTolerance))) {
+    std::ostringstream message;
+    message.precision(3);
+    message << "geodesic boundary from the double: the half's angle sums are off by " << report.maxResidual
+            << " rad (tolerance " << options.flow.tolerance << "; the double's asymmetry " << half.asymmetry << ")";
+    throw ConvergenceError(message.str());
+  }
+  if (options.progress)
+    options.progress("double: halved, " + std::to_string(half.splitFrom.size()) +
+                     " boundary vertices inserted where its edges cross the mirror");
+  out.report = report;
+  return out;
+}
+
+// uniformizeConstant for a target with geodesic boundary, through the double when the flow that keeps the boundary
+// edges fails (a boundary edge that would have to flip: a degenerate face or a Hessian that is not positive definite
+// there).
+Uniformization uniformizeGeodesicBoundary(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                          const UniformizationReport& report, Background geometry) {
+  try {
+    return uniformizeConstant(input, options, report, geometry);
+  } catch (const ConvergenceError& failed) {
+    if (options.progress) options.progress(std::string(failed.what()) + "; restarting from the double");
+    try {
+      return geodesicBoundaryFromDouble(input, options, report, geometry);
+    } catch (const ConvergenceError& again) {
+      throw ConvergenceError(std::string(failed.what()) + "; from the double: " + again.what());
+    }
+  }
+}
 }  // namespace
 
 // === entry point
@@ -400,7 +497,7 @@ Uniformization uniformize(const IntrinsicTriangulation& input, const Uniformizat
     out = uniformizeCircleDomain(input, options, report);
   } else {
     report.target = UniformizationTarget::HyperbolicGeodesicBoundary;
-    out = uniformizeConstant(input, options, report, Background::Hyperbolic);
+    out = uniformizeGeodesicBoundary(input, options, report, Background::Hyperbolic);
   }
   out.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -1,0 +1,374 @@
+// geodesic_half.cpp — the half of a mirror-symmetric closed triangulation (geodesic_half.h).
+#include "flow/geodesic_half.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
+
+namespace conformesh::intrinsic::detail {
+namespace {
+
+enum Side : signed char { kUnknown = 0, kInput = 1, kMirror = 2, kSplit = 3, kTrapezoid = 4, kSplitLoop = 5 };
+
+// The median from w of a triangle (v, v', w) with |wv| = a, |wv'| = b, |vv'| = c, to the midpoint of vv' (Stewart's
+// theorem and its constant-curvature analogues, from the law of cosines at the midpoint on both sides).
+double medianLength(Background bg, double a, double b, double c) {
+  switch (bg) {
+    case Background::Euclidean:
+      return std::sqrt(std::max(0.0, 0.5 * (a * a + b * b) - 0.25 * c * c));
+    case Background::Hyperbolic:
+      return std::acosh(std::max(1.0, (std::cosh(a) + std::cosh(b)) / (2 * std::cosh(0.5 * c))));
+    case Background::Spherical:
+      return std::acos(std::clamp((std::cos(a) + std::cos(b)) / (2 * std::cos(0.5 * c)), -1.0, 1.0));
+  }
+  return 0;
+}
+
+// The other leg of a right triangle with hypotenuse c and leg a (Pythagoras; cosh c = cosh a cosh b; cos c = cos a cos
+// b).
+double rightTriangleLeg(Background bg, double c, double a) {
+  switch (bg) {
+    case Background::Euclidean:
+      return std::sqrt(std::max(0.0, (c - a) * (c + a)));
+    case Background::Hyperbolic:
+      return std::acosh(std::max(1.0, std::cosh(c) / std::cosh(a)));
+    case Background::Spherical:
+      return std::acos(std::clamp(std::cos(c) / std::cos(a), -1.0, 1.0));
+  }
+  return 0;
+}
+
+ConvergenceError notSymmetric(int f, const std::string& what) {
+  return ConvergenceError(
+      "geodesic boundary from the double: the double's triangulation is not mirror-symmetric at "
+      "its face " +
+      std::to_string(f) + " (" + what + ")");
+}
+
+// Per face: kInput / kMirror when it has a vertex of that side only, kSplit for (v, v', w), kTrapezoid for half of a
+// quad (a, b, b', a'), kUnknown when all three vertices are on the boundary (sidesFromCentroids decides).
+std::vector<signed char> classifyFaces(const HalfedgeMesh& m, const std::vector<int>& mirror, int nInput) {
+  std::vector<signed char> side(m.nFaces(), kUnknown);
+  for (int f = 0; f < m.nFaces(); ++f) {
+    int input = 0, copy = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int v = m.faceVertex(f, k);
+      input += v < nInput && mirror[v] != v;
+      copy += v >= nInput;
+    }
+    if (input + copy == 3 && input > 0 && copy > 0) {
+      side[f] = kTrapezoid;  // half of a quad (a, b, b', a'): checked when it is split
+    } else if (input > 0 && copy > 0) {
+      for (int k = 0; k < 3; ++k) {
+        const int v = m.faceVertex(f, k), w = m.faceVertex(f, (k + 2) % 3);
+        if (v < nInput && mirror[v] != v && m.faceVertex(f, (k + 1) % 3) != mirror[v] && w != mirror[v])
+          throw notSymmetric(f, "an interior vertex beside a copy that is not its mirror image");
+      }
+      side[f] = kSplit;
+    } else if (input > 0) {
+      side[f] = kInput;
+    } else if (copy > 0) {
+      side[f] = kMirror;
+    }
+  }
+  return side;
+}
+
+// The faces that lie on one side (no vertex of the other side) take the side of their centroid's image under the
+// double's flip log: a face of the double's T0 below `inputFaces` is the input's. Vertex patterns alone cannot decide
+// a face of boundary vertices, nor tell the sides across an edge of a multi-edge or a loop (elephant-with-holes.off:
+// a loop around a three-edge hole); no face off the mirror crosses it (an edge that did would meet its mirror image),
+// so its centroid decides. Throws when a face with a vertex of one side maps to the other.
+void sidesFromCentroids(const HalfedgeMesh& m, const FlowCorrespondence& log, int inputFaces,
+                        std::vector<signed char>& side) {
+  std::vector<FacePoint> centroids;
+  std::vector<int> which;
+  for (int f = 0; f < m.nFaces(); ++f)
+    if (side[f] != kSplit && side[f] != kTrapezoid) {
+      centroids.push_back(FacePoint{f, {1.0 / 3, 1.0 / 3, 1.0 / 3}});
+      which.push_back(f);
+    }
+  const std::vector<FacePoint> images = log.mapToInput(m, centroids);
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const signed char found = images[i].face < inputFaces ? kInput : kMirror;
+    if (side[which[i]] != kUnknown && side[which[i]] != found)
+      throw notSymmetric(which[i], "its vertices are on one side and its centroid maps to the other");
+    side[which[i]] = found;
+  }
+}
+
+// A face (p, p, w) with a loop at a boundary vertex p is bisected by the mirror, from w to the loop's midpoint, when
+// that midpoint maps onto the mirror of the double's T0 (an edge of T0 between a face of the input and one of the
+// copy): the loop then goes around a short hole's neck (elephant-with-holes.off). The half kept, (p, mid, w) or
+// (mid, p, w), is the one whose centroid maps to the input's side (`firstHalf`). Vertex patterns cannot see either: all
+// three vertices are on the boundary, and the faces across its other two edges may both be one self-symmetric face.
+void findSymmetricLoopFaces(const IntrinsicTriangulation& doubled, const std::vector<int>& mirror,
+                            const FlowCorrespondence& log, const HalfedgeMesh& doubleInput, int inputFaces,
+                            std::vector<signed char>& side, std::vector<char>& firstHalf) {
+  constexpr double kOnEdge = 1e-6;  // barycentric: far above the replay's round-off, far below a generic distance
+  const HalfedgeMesh& m = doubled.mesh;
+  std::vector<int> faces;
+  std::vector<FacePoint> probes;  // per candidate: the loop's midpoint, the centroid of its first half
+  for (int f = 0; f < m.nFaces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int hl = HalfedgeMesh::halfedge(f, k), p = m.tail(hl);
+      const int w = m.tip(HalfedgeMesh::next(hl));
+      if (m.tip(hl) != p || mirror[p] != p || mirror[w] != w) continue;
+      FacePoint mid{f, {0, 0, 0}}, first{f, {0, 0, 0}};
+      mid.bary[k] = mid.bary[(k + 1) % 3] = 0.5;
+      first.bary[k] = 0.5;  // (p_c0, mid, w): the corners' thirds, mid = half c0 + half c1
+      first.bary[(k + 1) % 3] = 1.0 / 6;
+      first.bary[(k + 2) % 3] = 1.0 / 3;
+      faces.push_back(f);
+      probes.push_back(mid);
+      probes.push_back(first);
+    }
+  if (faces.empty()) return;
+  const std::vector<FacePoint> images = log.mapToInput(m, probes);
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const FacePoint& q = images[2 * i];
+    const int k = static_cast<int>(std::min_element(q.bary.begin(), q.bary.end()) - q.bary.begin());
+    const int across = HalfedgeMesh::face(doubleInput.twin(HalfedgeMesh::halfedge(q.face, (k + 1) % 3)));
+    if (q.bary[k] > kOnEdge || (q.face < inputFaces) == (across < inputFaces)) continue;
+    side[faces[i]] = kSplitLoop;
+    firstHalf[faces[i]] = images[2 * i + 1].face < inputFaces;
+  }
+}
+
+// The half assembled face by face: kept faces and edges of the double, crossing edges halved once (shared by the faces
+// on both of their sides), new edges with their lengths.
+class DoubleHalver {
+ public:
+  DoubleHalver(const IntrinsicTriangulation& doubled, const std::vector<int>& mirror, int nInput)
+      : d_(doubled), m_(doubled.mesh), mirror_(mirror), nInput_(nInput), idOfEdge_(m_.nEdges(), -1) {}
+
+  void addKeptFace(int f) {
+    faces_.push_back({m_.faceVertex(f, 0), m_.faceVertex(f, 1), m_.faceVertex(f, 2)});
+    ids_.push_back(
+        {keep(HalfedgeMesh::halfedge(f, 0)), keep(HalfedgeMesh::halfedge(f, 1)), keep(HalfedgeMesh::halfedge(f, 2))});
+  }
+  void addSplitFace(int f);
+  void addTrapezoid(int f);
+  void addSplitLoop(int f, bool firstHalf);
+  GeodesicHalf build();
+
+ private:
+  bool isInput(int v) const { return v < nInput_ && mirror_[v] != v; }
+  int keep(int h);
+  std::array<int, 2> split(int hc, int v);
+  int newEdge(double length) {
+    lengths_.push_back(length);
+    return static_cast<int>(lengths_.size()) - 1;
+  }
+  void noteAsymmetry(double a, double b) {
+    out_.asymmetry = std::max(out_.asymmetry, std::abs(a - b) / std::max(a, b));
+  }
+
+  const IntrinsicTriangulation& d_;
+  const HalfedgeMesh& m_;
+  const std::vector<int>& mirror_;
+  const int nInput_;
+  GeodesicHalf out_;
+  std::vector<std::array<int, 3>> faces_, ids_;
+  std::vector<double> lengths_;                    // per edge id of the half
+  std::vector<int> idOfEdge_;                      // kept edges of the double → their id
+  std::map<int, std::array<int, 2>> splitOfEdge_;  // crossing edge → (its midpoint vertex, the id of its input half)
+  std::vector<char> trapezoidDone_;
+};
+
+int DoubleHalver::keep(int h) {
+  const int e = m_.edge(h);
+  if (idOfEdge_[e] < 0) idOfEdge_[e] = newEdge(d_.edgeLengths[e]);
+  return idOfEdge_[e];
+}
+
+// The midpoint of crossing edge v–v' (a new boundary vertex) and the id of the half v–midpoint.
+std::array<int, 2> DoubleHalver::split(int hc, int v) {
+  auto [it, fresh] = splitOfEdge_.try_emplace(m_.edge(hc), std::array<int, 2>{-1, -1});
+  if (fresh) {
+    it->second = {nInput_ + static_cast<int>(out_.splitFrom.size()), newEdge(0.5 * d_.length(hc))};
+    out_.splitFrom.push_back(v);
+    out_.splitHalfedge.push_back(hc);
+  }
+  return it->second;
+}
+
+// A face (v, v', w), w on the boundary: its input half (v, midpoint, w), split along the median from w.
+void DoubleHalver::addSplitFace(int f) {
+  int k0 = 0;
+  while (!isInput(m_.faceVertex(f, k0))) ++k0;
+  const int h0 = HalfedgeMesh::halfedge(f, k0), h1 = HalfedgeMesh::next(h0), h2 = HalfedgeMesh::next(h1);
+  const int v = m_.tail(h0);
+  const bool crossingFirst = m_.tip(h0) == mirror_[v];  // (v, v', w), else (v, w, v')
+  const int hc = crossingFirst ? h0 : h2;               // v–v'
+  const int hw = crossingFirst ? h2 : h0;               // w–v, kept; h1 is v'–w, its mirror image
+  const int w = crossingFirst ? m_.tip(h1) : m_.tip(h0);
+  const double a = d_.length(hw), b = d_.length(h1), c = d_.length(hc);
+  noteAsymmetry(a, b);
+  const auto [mid, halfId] = split(hc, v);
+  const int median = newEdge(medianLength(d_.background, a, b, c));
+  if (crossingFirst) {
+    faces_.push_back({v, mid, w});
+    ids_.push_back({halfId, median, keep(hw)});
+  } else {
+    faces_.push_back({v, w, mid});
+    ids_.push_back({keep(hw), median, halfId});
+  }
+}
+
+// Two crossing edges a–a', b–b' that bound one quad (a, b, b', a') — an isosceles trapezoid, always cocircular, so
+// the Delaunay flips pick one of its diagonals a–b' or b–a', neither mirror-symmetric. Its input half is the quad
+// (a, b, m_b, m_a) with right angles at the midpoints, triangulated (a, b, m_b), (a, m_b, m_a): |a m_b| is the median
+// from a in the triangle (a, b, b') (whose side a–b' is the diagonal when that was chosen, else found from the
+// other triangle by symmetry), |m_a m_b| the other leg of the right triangle (a, m_a, m_b).
+void DoubleHalver::addTrapezoid(int f) {
+  // The diagonal: the edge of f between the two sides that does not join a vertex to its mirror image.
+  int hd = -1;
+  for (int k = 0; k < 3; ++k) {
+    const int h = HalfedgeMesh::halfedge(f, k), p = m_.tail(h), q = m_.tip(h);
+    if ((isInput(p) != isInput(q)) && mirror_[p] != q && !(mirror_[p] == p || mirror_[q] == q)) hd = h;
+  }
+  if (hd < 0) throw notSymmetric(f, "a face of both sides without a diagonal of a trapezoid");
+  if (trapezoidDone_.empty()) trapezoidDone_.assign(m_.nEdges(), 0);
+  if (trapezoidDone_[m_.edge(hd)]) return;
+  trapezoidDone_[m_.edge(hd)] = 1;
+  // The quad's cycle P → S → Q → R around the diagonal P → Q of (P, Q, R) and (Q, P, S), with its halfedges.
+  const int t = m_.twin(hd);
+  const std::array<int, 4> cycle{m_.tail(hd), m_.tip(HalfedgeMesh::next(t)), m_.tip(hd),
+                                 m_.tip(HalfedgeMesh::next(hd))};
+  const std::array<int, 4> sideH{HalfedgeMesh::next(t), HalfedgeMesh::prev(t), HalfedgeMesh::next(hd),
+                                 HalfedgeMesh::prev(hd)};  // cycle[i] → cycle[i+1]
+  int r = 0;
+  while (r < 4 && !(isInput(cycle[r]) && isInput(cycle[(r + 1) % 4]))) ++r;
+  if (r == 4) throw notSymmetric(f, "a trapezoid without two input vertices side by side");
+  const int a = cycle[r], b = cycle[(r + 1) % 4], bm = cycle[(r + 2) % 4], am = cycle[(r + 3) % 4];
+  if (bm != mirror_[b] || am != mirror_[a]) throw notSymmetric(f, "a trapezoid whose copies are not its mirror images");
+  const int hab = sideH[r], hb = sideH[(r + 1) % 4], hcopy = sideH[(r + 2) % 4], ha = sideH[(r + 3) % 4];
+  noteAsymmetry(d_.length(hab), d_.length(hcopy));
+  // |a b'|: the diagonal when it is a–b', else |b a'| (its mirror image).
+  const double diagonal = d_.length(hd);
+  const double bb = d_.length(hb), aa = d_.length(ha), ab = d_.length(hab);
+  const double toMb = medianLength(d_.background, ab, diagonal, bb);
+  const double la = 0.5 * aa;
+  const auto [mb, halfB] = split(hb, b);
+  const auto [ma, halfA] = split(ha, a);
+  const int diag = newEdge(toMb), rim = newEdge(rightTriangleLeg(d_.background, toMb, la));
+  faces_.push_back({a, b, mb});
+  ids_.push_back({keep(hab), halfB, diag});
+  faces_.push_back({a, mb, ma});
+  ids_.push_back({diag, rim, halfA});
+}
+
+// A face (p, p, w) bisected from w to the midpoint of its loop hl: p(c0) → p(c1) → w; the half kept is
+// (p(c0), mid, w) when `firstHalf`, else (mid, p(c1), w).
+void DoubleHalver::addSplitLoop(int f, bool firstHalf) {
+  int hl = HalfedgeMesh::halfedge(f, 0);
+  while (m_.tail(hl) != m_.tip(hl)) hl = HalfedgeMesh::next(hl);
+  const int h1 = HalfedgeMesh::next(hl), h2 = HalfedgeMesh::next(h1);
+  const int p = m_.tail(hl), w = m_.tip(h1);
+  const double a = d_.length(h2), b = d_.length(h1), c = d_.length(hl);
+  noteAsymmetry(a, b);
+  const auto [mid, halfId] = split(hl, p);
+  const int median = newEdge(medianLength(d_.background, a, b, c));
+  if (firstHalf) {
+    faces_.push_back({p, mid, w});
+    ids_.push_back({halfId, median, keep(h2)});
+  } else {
+    faces_.push_back({mid, p, w});
+    ids_.push_back({halfId, keep(h1), median});
+  }
+}
+
+GeodesicHalf DoubleHalver::build() {
+  const int nVertices = nInput_ + static_cast<int>(out_.splitFrom.size());
+  try {
+    out_.half.mesh = HalfedgeMesh::fromFaces(faces_, nVertices, "the half of the double", nullptr, ids_);
+  } catch (const InputError& e) {
+    throw ConvergenceError(std::string("geodesic boundary from the double: ") + e.what());
+  }
+  out_.half.background = d_.background;
+  out_.half.edgeLengths.assign(out_.half.mesh.nEdges(), 0.0);
+  for (std::size_t f = 0; f < faces_.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      out_.half.edgeLengths[out_.half.mesh.edge(HalfedgeMesh::halfedge(static_cast<int>(f), k))] = lengths_[ids_[f][k]];
+  try {
+    validateLengths(out_.half, "the half of the double");
+  } catch (const InputError& e) {
+    throw ConvergenceError(std::string("geodesic boundary from the double: ") + e.what());
+  }
+  return std::move(out_);
+}
+
+}  // namespace
+
+GeodesicHalf halveSymmetricDouble(const IntrinsicTriangulation& doubled, const std::vector<int>& mirror, int nInput,
+                                  const FlowCorrespondence& log, const HalfedgeMesh& doubleInput, int inputFaces) {
+  std::vector<signed char> side = classifyFaces(doubled.mesh, mirror, nInput);
+  sidesFromCentroids(doubled.mesh, log, inputFaces, side);
+  std::vector<char> firstHalf(doubled.mesh.nFaces(), 0);
+  findSymmetricLoopFaces(doubled, mirror, log, doubleInput, inputFaces, side, firstHalf);
+  DoubleHalver halver(doubled, mirror, nInput);
+  for (int f = 0; f < doubled.mesh.nFaces(); ++f) {
+    if (side[f] == kInput) halver.addKeptFace(f);
+    if (side[f] == kSplit) halver.addSplitFace(f);
+    if (side[f] == kTrapezoid) halver.addTrapezoid(f);
+    if (side[f] == kSplitLoop) halver.addSplitLoop(f, firstHalf[f]);
+  }
+  return halver.build();
+}
+
+std::vector<BoundaryPoint> locateOnInputBoundary(const IntrinsicTriangulation& input, const std::vector<int>& mirror,
+                                                 const HalfedgeMesh& doubleInput, const IntrinsicTriangulation& doubled,
+                                                 const FlowCorrespondence& log, const GeodesicHalf& half) {
+  // The map's round-off: the replay moves points through the flipped quads in double precision (docs/ricci_flow.md
+  // §5); 10⁻⁶ is far above it and far below any distance from an edge that a symmetric map could produce (zero).
+  constexpr double kOnEdge = 1e-6;
+  const HalfedgeMesh& in = input.mesh;
+  std::map<std::pair<int, int>, int> boundaryEdge;
+  for (int e = 0; e < in.nEdges(); ++e)
+    if (in.isBoundaryEdge(e)) {
+      const int h = in.edgeHalfedge(e);
+      boundaryEdge.emplace(std::minmax(in.tail(h), in.tip(h)), e);
+    }
+  std::vector<FacePoint> midpoints;
+  for (int h : half.splitHalfedge) {
+    FacePoint p;
+    p.face = HalfedgeMesh::face(h);
+    p.bary = {0, 0, 0};
+    p.bary[h % 3] = p.bary[HalfedgeMesh::next(h) % 3] = 0.5;
+    midpoints.push_back(p);
+  }
+  const std::vector<FacePoint> images = log.mapToInput(doubled.mesh, midpoints);
+  std::vector<BoundaryPoint> out;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const FacePoint& q = images[i];
+    const int k = static_cast<int>(std::min_element(q.bary.begin(), q.bary.end()) - q.bary.begin());
+    const int a = doubleInput.faceVertex(q.face, (k + 1) % 3), b = doubleInput.faceVertex(q.face, (k + 2) % 3);
+    const auto found = boundaryEdge.find(std::minmax(a, b));
+    if (q.bary[k] > kOnEdge || mirror[a] != a || mirror[b] != b || found == boundaryEdge.end())
+      throw ConvergenceError("geodesic boundary from the double: inserted boundary vertex " +
+                             std::to_string(input.mesh.nVertices() + static_cast<int>(i)) +
+                             " (halving the edge of vertex " + std::to_string(half.splitFrom[i]) +
+                             " to its mirror image) does not map to the input's boundary");
+    const int tail = in.tail(in.edgeHalfedge(found->second));
+    const double atA = q.bary[(k + 1) % 3], atB = q.bary[(k + 2) % 3];
+    out.push_back({found->second, (tail == a ? atB : atA) / (atA + atB)});
+  }
+  return out;
+}
+
+double maxGeodesicBoundaryResidual(const IntrinsicTriangulation& tri) {
+  const std::vector<double> sums = angleSums(tri);
+  double worst = 0;
+  for (int v = 0; v < tri.mesh.nVertices(); ++v) {
+    worst = std::max(worst, std::abs(sums[v] - (tri.mesh.isBoundaryVertex(v) ? M_PI : 2 * M_PI)));
+  }
+  return worst;
+}
+
+}  // namespace conformesh::intrinsic::detail
