@@ -13,6 +13,7 @@
 
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/mesh_components.h"
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/intrinsic/mesh/mesh_generators.h"
@@ -20,7 +21,9 @@
 
 using namespace conformesh::intrinsic;
 using conformesh::intrinsic::detail::DiskDouble;
+using conformesh::intrinsic::detail::DiskHalf;
 using conformesh::intrinsic::detail::doubleDisk;
+using conformesh::intrinsic::detail::halveDoubleSphere;
 
 namespace {
 
@@ -131,5 +134,87 @@ TEST_CASE("the doubles of CGAL's disks whose circle-domain flow fails are unifor
       (area > 0 ? positive : negative) += 1;
     }
     std::printf("  disk faces straight-line at the projected points: %d positive, %d negative\n", positive, negative);
+  }
+}
+
+TEST_CASE(
+    "the half of the double is a circle domain with a boundary vertex where each crossing edge meets the mirror") {
+  // The three CGAL disks whose own circle-domain flow fails (docs/ricci_flow.md §3.3, "The half"). The half's
+  // straight-line triangulation at the stereographic images: every boundary vertex on the unit circle (the input's by
+  // the sphere's symmetry, the new ones by construction), interior angle sums 2π, each boundary angle sum the inscribed
+  // polygon's π − (φ_prev + φ_next), φ = asin(ℓ/2), Gauss–Bonnet; each new vertex mapped by the double's
+  // correspondence onto an input boundary edge, and the half's boundary loop visiting, between consecutive input
+  // boundary vertices a, b, exactly the new vertices on edge ab in increasing parameter.
+  for (const char* file : {"blob.off", "corner_tris_with_hole.off", "corner_with_hole.off"}) {
+    CAPTURE(file);
+    const IntrinsicTriangulation disk = toTriangulation(readMesh(dataFile(file)));
+    const DiskDouble d = doubleDisk(disk);
+    const Uniformization s = uniformize(d.surface);
+    const DiskHalf half = halveDoubleSphere(disk, d, s);
+    const HalfedgeMesh& m = half.plane.mesh;
+    const int n = disk.mesh.nVertices();
+    std::printf("%s half: %d crossing edges (%d self-mirror), %d new boundary vertices, %d faces, %d plane flips\n",
+                file, half.crossingEdges, half.selfMirrorCrossings, static_cast<int>(half.inserted.size()), m.nFaces(),
+                half.delaunayFlips);
+    CHECK(half.crossingEdges > 0);
+    REQUIRE(m.nVertices() == n + static_cast<int>(half.inserted.size()));
+    REQUIRE(m.components().size() == 1);
+    CHECK(m.components()[0].genus == 0);
+    REQUIRE(m.boundaryLoops().size() == 1);
+    for (int v = 0; v < n; ++v) CHECK(m.isBoundaryVertex(v) == disk.mesh.isBoundaryVertex(v));
+    double circle = 0;
+    for (int v = 0; v < m.nVertices(); ++v)
+      if (m.isBoundaryVertex(v)) circle = std::max(circle, std::abs(half.positions[v].norm() - 1));
+    const std::vector<double> sums = angleSums(half.plane);
+    double interior = 0, boundary = 0;
+    const std::vector<int> loop = m.boundaryLoops()[0];
+    const int k = static_cast<int>(loop.size());
+    for (int v = 0; v < m.nVertices(); ++v)
+      if (!m.isBoundaryVertex(v)) interior = std::max(interior, std::abs(sums[v] - 2 * M_PI));
+    for (int i = 0; i < k; ++i) {
+      const double into = half.plane.length(loop[(i + k - 1) % k]), out = half.plane.length(loop[i]);
+      const int v = m.tail(loop[i]);
+      boundary = std::max(boundary, std::abs(sums[v] - (M_PI - std::asin(into / 2) - std::asin(out / 2))));
+    }
+    const double gaussBonnet = curvatureTotals(half.plane).gaussBonnetResidual;
+    std::printf(
+        "  on the unit circle to %.3g, interior angle sums to %.3g, boundary angle sums to %.3g, Gauss-Bonnet "
+        "%.3g\n",
+        circle, interior, boundary, gaussBonnet);
+    CHECK(circle < 1e-8);
+    CHECK(interior < 1e-10);
+    CHECK(boundary < 1e-10);
+    CHECK(std::abs(gaussBonnet) < 1e-10);
+    // The correspondence: new vertices on input boundary edges, in loop order.
+    std::vector<std::vector<std::pair<double, int>>> onEdge(disk.mesh.nEdges());
+    for (const auto& q : half.inserted) {
+      CHECK(std::abs(q.offEdge) < 1e-8);
+      CHECK(q.parameter > 0);
+      CHECK(q.parameter < 1);
+      const int h = disk.mesh.edgeHalfedge(q.inputEdge);
+      std::printf("  new vertex %d on input edge %d (%d -> %d, length %.6g) at t = %.9f%s\n", q.vertex, q.inputEdge,
+                  disk.mesh.tail(h), disk.mesh.tip(h), disk.edgeLengths[q.inputEdge], q.parameter,
+                  q.selfMirror ? " (self-mirror edge)" : "");
+      onEdge[q.inputEdge].emplace_back(q.parameter, q.vertex);
+    }
+    int start = 0;
+    while (m.tail(loop[start]) >= n) ++start;
+    for (int i = 0; i < k;) {
+      const int a = m.tail(loop[(start + i) % k]);
+      std::vector<int> between;
+      int j = i + 1;
+      while (m.tail(loop[(start + j) % k]) >= n) between.push_back(m.tail(loop[(start + j++) % k]));
+      const int b = m.tail(loop[(start + j) % k]);
+      // The input boundary edge ab, traversed a → b along the loop as the input traverses it.
+      int edge = -1;
+      for (const int h : disk.mesh.boundaryLoops()[0])
+        if (disk.mesh.tail(h) == a && disk.mesh.tip(h) == b) edge = disk.mesh.edge(h);
+      REQUIRE(edge >= 0);
+      std::vector<std::pair<double, int>> expected = onEdge[edge];
+      std::sort(expected.begin(), expected.end());
+      REQUIRE(expected.size() == between.size());
+      for (std::size_t t = 0; t < between.size(); ++t) CHECK(expected[t].second == between[t]);
+      i = j;
+    }
   }
 }

@@ -82,6 +82,16 @@ struct Uniformization {
   std::vector<Eigen::Vector3d> positions;
   FlowCorrespondence correspondence;
   UniformizationReport report;
+  // Circle domains taken from the half of the double only (docs/ricci_flow.md §3.3, "The half"): the vertices of
+  // T0* that are not vertices of T0, each on an input boundary edge at `parameter` ∈ (0, 1) from
+  // tail(edgeHalfedge(inputEdge)), in the input's lengths. When non-empty, T0* has T0's vertices 0..V−1 plus these,
+  // its connectivity is not reached from T0's by flips, and `correspondence` is empty (0 faces: its maps throw
+  // InputError) — the flip log cannot carry inserted vertices.
+  struct InsertedVertex {
+    int vertex = -1, inputEdge = -1;
+    double parameter = 0;
+  };
+  std::vector<InsertedVertex> insertedVertices;
 };
 
 // Uniformizes `input` (any background: its Penner lengths are its chords). A disk whose circle-domain flow fails is
