@@ -212,9 +212,10 @@ void startFromDouble(const IntrinsicTriangulation& input, const DoubleSphere& so
 // The circle domain as the half of the double's sphere (detail::halveDoubleSphere): when boundary edges flipped away
 // on the double, the disk's own flow (boundary edges kept) has no solution to reach; the half subdivides each crossing
 // edge where it meets the mirror's great circle. Its residual is recomputed from its own lengths: interior |Θ − 2π|,
-// boundary |Θ − (π − φ_prev − φ_next)| with φ = asin(ℓ/2) on the unit circle (§3.3).
+// boundary |Θ − (π − φ_prev − φ_next)| with φ = asin(ℓ/2) on the unit circle (§3.3), and held to the flow's tolerance;
+// the boundary must lie on the unit circle to the layout check's 1e-8. Throws ConvergenceError otherwise.
 Uniformization circleDomainFromHalf(const IntrinsicTriangulation& input, const DoubleSphere& solved,
-                                    UniformizationReport report) {
+                                    const UniformizationOptions& options, UniformizationReport report) {
   const detail::DiskHalf half = detail::halveDoubleSphere(input, solved.twin, solved.sphere);
   Uniformization out;
   out.uniform = half.plane;
@@ -234,7 +235,18 @@ Uniformization circleDomainFromHalf(const IntrinsicTriangulation& input, const D
       const double theta = M_PI - std::asin(into / 2) - std::asin(out.uniform.length(loop[i]) / 2);
       residual = std::max(residual, std::abs(sums[m.tail(loop[i])] - theta));
     }
+  double circle = 0;
+  for (int v = 0; v < m.nVertices(); ++v)
+    if (m.isBoundaryVertex(v)) circle = std::max(circle, std::abs(out.positions[v].norm() - 1));
+  if (!(residual <= options.flow.tolerance) || !(circle <= 1e-8)) {
+    std::ostringstream message;
+    message.precision(3);
+    message << "uniformize: half of the double: max |Θ̂ − Θ| = " << residual << " rad (tolerance "
+            << options.flow.tolerance << "), boundary off the unit circle by " << circle << " (tolerance 1e-08)";
+    throw ConvergenceError(message.str());
+  }
   report.maxResidual = residual;
+  report.effectiveTolerance = options.flow.tolerance;
   report.flips += solved.sphere.report.flips + half.delaunayFlips;
   report.newtonSteps += solved.sphere.report.newtonSteps;
   out.report = report;
@@ -310,7 +322,7 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
         options.progress(std::string("circle domain from the double: ") + again.what() +
                          "; taking the half of the double's sphere");
       try {
-        return circleDomainFromHalf(input, *solved, report);
+        return circleDomainFromHalf(input, *solved, options, report);
       } catch (const ConvergenceError& half) {
         throw ConvergenceError(std::string(failed.what()) + "; from the double's sphere: " + again.what() +
                                "; its half: " + half.what());
