@@ -502,4 +502,10 @@ ComponentUniformization uniformizeComponents(const IntrinsicTriangulation& input
   return out;
 }
 
+std::string correspondenceUnavailable(const Uniformization& u) {
+  if (u.insertedVertices.empty()) return "";
+  return "the circle domain has " + std::to_string(u.insertedVertices.size()) +
+         " boundary vertices inserted where the double's flipped edges cross its mirror";
+}
+
 }  // namespace conformesh::intrinsic

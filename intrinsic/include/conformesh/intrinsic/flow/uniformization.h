@@ -95,13 +95,19 @@ struct Uniformization {
 };
 
 // Uniformizes `input` (any background: its Penner lengths are its chords). A disk whose circle-domain flow fails is
-// restarted once from its double's sphere (docs/ricci_flow.md §3.3, "The double"); a disk without interior vertices is
-// developed onto its circle directly. Throws InputError for invalid options
-// (options.validate()), more than one connected component (uniformizeComponents below takes those) or invalid lengths;
-// ConvergenceError (with the residual reached) when a flow does not converge, when a circle domain's layout does not
-// reproduce a loop's circle (three or more loops; an annulus falls back to the flat cylinder), or when a flat
+// restarted once from its double's sphere (docs/ricci_flow.md §3.3, "The double"); when that restart fails too, its
+// circle domain is the half of the double's sphere, with boundary vertices inserted (insertedVertices, "The half of
+// the double"); a disk without interior vertices is developed onto its circle directly. Throws InputError for invalid
+// options (options.validate()), more than one connected component (uniformizeComponents below takes those) or invalid
+// lengths; ConvergenceError (with the residual reached) when a flow does not converge, when a circle domain's layout
+// does not reproduce a loop's circle (three or more loops; an annulus falls back to the flat cylinder), or when a flat
 // cylinder's two ends differ in length (docs/ricci_flow.md §3.3).
 Uniformization uniformize(const IntrinsicTriangulation& input, const UniformizationOptions& options = {});
+
+// Why `u.correspondence` cannot map T0* back to T0, for callers that need it (the pull-back, a written flip log), or
+// "" when it can: "the circle domain has N boundary vertices inserted where the double's flipped edges cross its
+// mirror" (u.insertedVertices non-empty).
+std::string correspondenceUnavailable(const Uniformization& u);
 
 // A surface of several connected components, each uniformized to its own target by its own topology (the targets
 // above), in splitComponents' order.
