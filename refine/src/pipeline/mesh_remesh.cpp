@@ -212,9 +212,7 @@ class MeshRemeshPipeline {
   void checkFlipLog(const Uniformization& u, const IntrinsicTriangulation& t0) const {
     const std::string gap = correspondenceUnavailable(u);
     if (!gap.empty())
-      throw ConvergenceError("remesh: " + gap +
-                             ", and the pull-back needs a correspondence that carries them; use the default route "
-                             "--refine-in input");
+      throw ConvergenceError("remesh: " + gap + "; use the default route --refine-in input");
     const double flips = static_cast<double>(u.correspondence.flips().size()), edges = t0.mesh.nEdges();
     if (flips <= kMaxFlipsPerEdge * edges) return;
     throw ConvergenceError("remesh: the flow made " + std::to_string(u.correspondence.flips().size()) +
