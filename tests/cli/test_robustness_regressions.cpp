@@ -175,7 +175,7 @@ TEST_CASE("uniformize dragknob.off, spool.off (genus 0): converged to 1e-10 past
     CHECK(j["target"] == "sphere");
     CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
     const int nF = j["verification"]["faces_checked"].get<int>();
-    const double roundOff = 16 * nF * 2.220446049250313e-16 * M_PI;  // F faces, three angles of size ≤ π each
+    const double roundOff = 16 * nF * 2.220446049250313e-16 * M_PI;   // F faces, three angles of size ≤ π each
     CHECK(j["max_interior_angle_sum_error"].get<double>() <= 1e-12);  // from the written spherical lengths
     CHECK(std::abs(j["gauss_bonnet_residual"].get<double>()) <= roundOff);
     CHECK(seconds < 30);
@@ -213,8 +213,8 @@ TEST_CASE("uniformize blob.off, corner_with_hole.off: the half of the double, in
     const fs::path map = out.parent_path() / (std::string(name) + "_half_map.json");
     const fs::path out2 = out.parent_path() / (std::string(name) + "_half2.ply");
     fs::remove(out2);
-    const auto c = runConformesh("-q uniformize " + mesh(name) + " -o " + out2.string() + " --correspondence " +
-                                 map.string());
+    const auto c =
+        runConformesh("-q uniformize " + mesh(name) + " -o " + out2.string() + " --correspondence " + map.string());
     CHECK(c.status == 1);
     CHECK(c.err.find("boundary vertices inserted where the double's flipped edges cross its mirror") !=
           std::string::npos);
