@@ -53,6 +53,15 @@ intrinsic::Uniformization runFlow(const UniformizeOptions& o, const intrinsic::I
   return intrinsic::uniformizeByCirclePacking(input, packing).result;
 }
 
+// --correspondence of a circle domain with inserted vertices (the half of the double): its flip log is empty, so it is
+// refused before anything is written rather than written as a map that cannot be read back.
+void refuseCorrespondence(const intrinsic::Uniformization& u, int component) {
+  const std::string gap = intrinsic::correspondenceUnavailable(u);
+  if (gap.empty()) return;
+  throw ConvergenceError("uniformize: " + (component >= 0 ? "component " + std::to_string(component) + ": " : "") +
+                         gap + "; the flip log cannot carry them, so --correspondence cannot be written");
+}
+
 void writeCorrespondence(const std::string& path, const nlohmann::json& j) {
   std::ofstream file(path);
   if (!file) throw InputError(path + ": cannot open for writing");
@@ -96,7 +105,10 @@ void runUniformizeComponents(const UniformizeOptions& o, const intrinsic::Intrin
   j["input"] = o.input;
   j["output"] = o.output;
   j["method"] = o.method;
-  if (!o.correspondence.empty()) j["correspondence"] = o.correspondence;
+  if (!o.correspondence.empty()) {
+    j["correspondence"] = o.correspondence;
+    for (std::size_t i = 0; i < cu.parts.size(); ++i) refuseCorrespondence(cu.parts[i], static_cast<int>(i));
+  }
   refine::OutputVerification check;
   const int n = static_cast<int>(cu.parts.size());
   for (int i = 0; i < n; ++i)
@@ -155,7 +167,10 @@ void runUniformize(const UniformizeOptions& o) {
   j["input"] = o.input;
   j["output"] = o.output;
   j["method"] = o.method;
-  if (!o.correspondence.empty()) j["correspondence"] = o.correspondence;
+  if (!o.correspondence.empty()) {
+    j["correspondence"] = o.correspondence;
+    refuseCorrespondence(u, -1);
+  }
   const refine::OutputVerification check = refine::verifyUniformization(u);
   const std::string written = verifiedOutputPath(check, o.keepFailed, o.output, j);
   if (!written.empty()) intrinsic::writeMesh(out, written);
@@ -179,6 +194,10 @@ void runUniformize(const UniformizeOptions& o) {
   std::printf("  %-30s %.12g\n", "total area", j["total_area"].get<double>());
   if (r.target == intrinsic::UniformizationTarget::FlatCylinder)
     std::printf("  %-30s %.12g (circumference 2 pi; = log(R/r) of the annulus)\n", "cylinder height", r.cylinderHeight);
+  if (!u.insertedVertices.empty())
+    std::printf("  %-30s %d (vertices %d..%d, where the double's flipped edges cross its mirror)\n",
+                "inserted boundary vertices", static_cast<int>(u.insertedVertices.size()),
+                u.insertedVertices.front().vertex, u.insertedVertices.back().vertex);
 }
 
 }  // namespace

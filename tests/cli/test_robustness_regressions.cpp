@@ -175,7 +175,7 @@ TEST_CASE("uniformize dragknob.off, spool.off (genus 0): converged to 1e-10 past
     CHECK(j["target"] == "sphere");
     CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
     const int nF = j["verification"]["faces_checked"].get<int>();
-    const double roundOff = 16 * nF * 2.220446049250313e-16 * M_PI;  // F faces, three angles of size ≤ π each
+    const double roundOff = 16 * nF * 2.220446049250313e-16 * M_PI;   // F faces, three angles of size ≤ π each
     CHECK(j["max_interior_angle_sum_error"].get<double>() <= 1e-12);  // from the written spherical lengths
     CHECK(std::abs(j["gauss_bonnet_residual"].get<double>()) <= roundOff);
     CHECK(seconds < 30);
@@ -202,4 +202,51 @@ TEST_CASE("uniformize lion.off (5 boundary loops): the circle domain converges t
   const double roundOff = 16 * nF * 2.220446049250313e-16 * M_PI;  // F faces, three angles of size ≤ π each
   CHECK(j["max_interior_angle_sum_error"].get<double>() <= 1e-10);  // from the written lengths
   CHECK(std::abs(j["gauss_bonnet_residual"].get<double>()) <= roundOff);
+}
+
+// Issue #18: CGAL's disks whose circle-domain flow needs a boundary edge flipped (and fails again from the double's
+// start) are the half of the double's sphere, with boundary vertices inserted where the double's flipped edges cross
+// its mirror (docs/ricci_flow.md §3.3, "The half of the double"). uniformize writes it, verified: the input's
+// vertices first, the inserted ones appended, the file's boundary on the unit circle. Routes that need the flow's
+// correspondence are refused naming the reason, before writing anything.
+TEST_CASE("uniformize blob.off, corner_with_hole.off: the half of the double, inserted vertices reported") {
+  for (const char* name : {"blob.off", "corner_with_hole.off"}) {
+    INFO(name);
+    const fs::path out = conformesh::testing::scratchDir() / (std::string(name) + "_half.ply");
+    const auto r = runConformesh("-q uniformize " + mesh(name) + " -o " + out.string() + " --json");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["target"] == "circle-domain");
+    CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
+    const auto in = conformesh::intrinsic::toTriangulation(conformesh::intrinsic::readMesh(mesh(name)));
+    const auto data = conformesh::intrinsic::readMesh(out.string());
+    const int n = in.mesh.nVertices(), inserted = j["inserted_boundary_vertex_count"].get<int>();
+    CHECK(inserted > 0);
+    REQUIRE(static_cast<int>(data.positions.size()) == n + inserted);
+    const auto o = conformesh::intrinsic::toTriangulation(data);
+    for (int v = 0; v < n; ++v) CHECK(o.mesh.isBoundaryVertex(v) == in.mesh.isBoundaryVertex(v));
+    for (int i = 0; i < inserted; ++i) {
+      const auto& q = j["inserted_boundary_vertices"][i];
+      CHECK(q["vertex"] == n + i);
+      CHECK(in.mesh.isBoundaryEdge(q["input_edge"].get<int>()));
+      CHECK(std::abs(data.positions[n + i].norm() - 1) < 1e-10);
+    }
+    const fs::path map = out.parent_path() / (std::string(name) + "_half_map.json");
+    const fs::path out2 = out.parent_path() / (std::string(name) + "_half2.ply");
+    fs::remove(out2);
+    const auto c =
+        runConformesh("-q uniformize " + mesh(name) + " -o " + out2.string() + " --correspondence " + map.string());
+    CHECK(c.status == 1);
+    CHECK(c.err.find("boundary vertices inserted where the double's flipped edges cross its mirror") !=
+          std::string::npos);
+    CHECK(!fs::exists(out2));
+    CHECK(!fs::exists(map));
+    const auto u = runConformesh("-q remesh " + mesh(name) + " --eps-rel 0.1 --refine-in uniformized --no-check -o " +
+                                 (out.parent_path() / (std::string(name) + "_half_remesh.ply")).string());
+    CHECK(u.status == 1);
+    CHECK(u.err.find("the circle domain has " + std::to_string(inserted) +
+                     " boundary vertices inserted where the double's flipped edges cross its mirror; use the default "
+                     "route --refine-in input") != std::string::npos);
+  }
 }

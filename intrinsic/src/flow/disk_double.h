@@ -5,6 +5,9 @@
 
 #include <vector>
 
+#include <Eigen/Core>
+
+#include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
 
 namespace conformesh::intrinsic::detail {
@@ -20,5 +23,35 @@ struct DiskDouble {
 // interior edge between two boundary vertices appears twice (a multi-edge, kept apart by edge ids). Throws InputError
 // when `disk` has no boundary.
 DiskDouble doubleDisk(const IntrinsicTriangulation& disk);
+
+// A vertex of the disk's half that is not a vertex of the disk: where an edge of the double's final Delaunay
+// triangulation crosses the reflection's great circle. It lies on the input boundary edge `inputEdge` (an edge of the
+// disk) at `parameter` t ∈ (0, 1) from tail(edgeHalfedge(inputEdge)) toward its tip, in the input's own lengths
+// (the double's correspondence maps it there; the mirror symmetry puts it on the fixed set).
+struct HalfBoundaryVertex {
+  int vertex = -1;          // its id in DiskHalf::plane (≥ the disk's vertex count)
+  int inputEdge = -1;       // the disk's boundary edge it lies on
+  double parameter = 0;     // position along that edge, in the input's lengths
+  double offEdge = 0;       // the smallest barycentric coordinate the correspondence gave it (0 on the edge)
+  bool selfMirror = false;  // the crossing edge joins a vertex to its own mirror image (crossing at its midpoint)
+};
+
+// The disk's half of the double's sphere, stereographically projected from the mirror pole onto the unit disk: a
+// straight-line triangulation of the unit disk whose boundary loop holds the disk's boundary vertices plus one new
+// vertex per crossing edge (docs/ricci_flow.md §3.3, "The half").
+struct DiskHalf {
+  IntrinsicTriangulation plane;            // Euclidean, lengths |z_i − z_j|, then flipped to intrinsic Delaunay
+  std::vector<Eigen::Vector3d> positions;  // z per vertex (z = 0 plane), the boundary on the unit circle
+  std::vector<double> lambda;  // per vertex: input vertices exact (−w − log 2 + 2 log|x − p|), new ones
+                               // interpolated linearly along their input edge
+  std::vector<HalfBoundaryVertex> inserted;
+  int crossingEdges = 0, selfMirrorCrossings = 0, delaunayFlips = 0;
+};
+
+// The half of `sphere` (uniformize's result on twin.surface, which must be that of `disk`). Throws ConvergenceError
+// when the double's solution is not mirror-symmetric enough to take a half (a disk vertex on the mirror side, a face
+// with all three vertices on the great circle), when a projected face is not positively oriented (a fold), or when the
+// correspondence does not put a new vertex on an input boundary edge (to 1e-8).
+DiskHalf halveDoubleSphere(const IntrinsicTriangulation& disk, const DiskDouble& twin, const Uniformization& sphere);
 
 }  // namespace conformesh::intrinsic::detail

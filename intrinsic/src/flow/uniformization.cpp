@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 #include <Eigen/CholmodSupport>
@@ -182,23 +183,77 @@ BoundaryLoops boundaryLoopsOf(const IntrinsicTriangulation& input) {
   return loops;
 }
 
+// The double's sphere (disk_double.h), kept for the half below when the restart fails too.
+struct DoubleSphere {
+  detail::DiskDouble twin;
+  Uniformization sphere;
+};
+
+DoubleSphere solveDouble(const IntrinsicTriangulation& input, const UniformizationOptions& options) {
+  DoubleSphere out{detail::doubleDisk(input), {}};
+  UniformizationOptions quiet = options;
+  if (options.progress) quiet.progress = [&options](const std::string& line) { options.progress("double: " + line); };
+  UniformizationReport sphereReport;
+  out.sphere = detail::uniformizeSphere(out.twin.surface, quiet, sphereReport);
+  return out;
+}
+
 // u for a disk from the sphere of its double (disk_double.h): the double's total scaling w (λ = −w) plus the factor of
 // the stereographic projection from the mirror pole p onto the equatorial plane, |σx − σy| = 2|x − y|/(|x − p||y − p|)
 // (an inversion of radius √2 centred at p: vertex scaling is Möbius invariant, BPS 2015), so u = w + log 2 − 2 log|x −
 // p|. The pole is −n, n the unit mean of x_v − x_v' over the disk's vertices (the solution is mirror-symmetric).
-void startFromDouble(const IntrinsicTriangulation& input, const UniformizationOptions& options,
-                     DiscreteConformalMetric& metric) {
-  const detail::DiskDouble twin = detail::doubleDisk(input);
-  UniformizationOptions quiet = options;
-  if (options.progress) quiet.progress = [&options](const std::string& line) { options.progress("double: " + line); };
-  UniformizationReport sphereReport;
-  const Uniformization sphere = detail::uniformizeSphere(twin.surface, quiet, sphereReport);
+void startFromDouble(const IntrinsicTriangulation& input, const DoubleSphere& solved, DiscreteConformalMetric& metric) {
+  const Uniformization& sphere = solved.sphere;
   const int n = input.mesh.nVertices();
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-  for (int v = 0; v < n; ++v) normal += sphere.positions[v] - sphere.positions[twin.mirror[v]];
+  for (int v = 0; v < n; ++v) normal += sphere.positions[v] - sphere.positions[solved.twin.mirror[v]];
   normal.normalize();
   for (int v = 0; v < n; ++v)
     metric.u()[v] = -sphere.lambda[v] + std::log(2.0) - 2 * std::log((sphere.positions[v] + normal).norm());
+}
+
+// The circle domain as the half of the double's sphere (detail::halveDoubleSphere): when boundary edges flipped away
+// on the double, the disk's own flow (boundary edges kept) has no solution to reach; the half subdivides each crossing
+// edge where it meets the mirror's great circle. Its residual is recomputed from its own lengths: interior |Θ − 2π|,
+// boundary |Θ − (π − φ_prev − φ_next)| with φ = asin(ℓ/2) on the unit circle (§3.3), and held to the flow's tolerance;
+// the boundary must lie on the unit circle to the layout check's 1e-8. Throws ConvergenceError otherwise.
+Uniformization circleDomainFromHalf(const IntrinsicTriangulation& input, const DoubleSphere& solved,
+                                    const UniformizationOptions& options, UniformizationReport report) {
+  const detail::DiskHalf half = detail::halveDoubleSphere(input, solved.twin, solved.sphere);
+  Uniformization out;
+  out.uniform = half.plane;
+  out.positions = half.positions;
+  out.lambda = half.lambda;
+  out.correspondence = FlowCorrespondence(0);
+  for (const detail::HalfBoundaryVertex& q : half.inserted)
+    out.insertedVertices.push_back({q.vertex, q.inputEdge, q.parameter});
+  const std::vector<double> sums = angleSums(out.uniform);
+  const HalfedgeMesh& m = out.uniform.mesh;
+  double residual = 0;
+  for (int v = 0; v < m.nVertices(); ++v)
+    if (!m.isBoundaryVertex(v)) residual = std::max(residual, std::abs(sums[v] - 2 * M_PI));
+  for (const std::vector<int>& loop : m.boundaryLoops())
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const double into = out.uniform.length(loop[(i + loop.size() - 1) % loop.size()]);
+      const double theta = M_PI - std::asin(into / 2) - std::asin(out.uniform.length(loop[i]) / 2);
+      residual = std::max(residual, std::abs(sums[m.tail(loop[i])] - theta));
+    }
+  double circle = 0;
+  for (int v = 0; v < m.nVertices(); ++v)
+    if (m.isBoundaryVertex(v)) circle = std::max(circle, std::abs(out.positions[v].norm() - 1));
+  if (!(residual <= options.flow.tolerance) || !(circle <= 1e-8)) {
+    std::ostringstream message;
+    message.precision(3);
+    message << "uniformize: half of the double: max |Θ̂ − Θ| = " << residual << " rad (tolerance "
+            << options.flow.tolerance << "), boundary off the unit circle by " << circle << " (tolerance 1e-08)";
+    throw ConvergenceError(message.str());
+  }
+  report.maxResidual = residual;
+  report.effectiveTolerance = options.flow.tolerance;
+  report.flips += solved.sphere.report.flips + half.delaunayFlips;
+  report.newtonSteps += solved.sphere.report.newtonSteps;
+  out.report = report;
+  return out;
 }
 
 Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const UniformizationOptions& options,
@@ -270,11 +325,23 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
       options.progress(std::string("circle domain: ") + failed.what() + "; restarting from the double");
     metric = DiscreteConformalMetric(referencePenner(input), Background::Euclidean);
     log = FlowCorrespondence(m.nFaces());
+    std::unique_ptr<DoubleSphere> solved;
     try {
-      startFromDouble(input, options, metric);
+      solved = std::make_unique<DoubleSphere>(solveDouble(input, options));
+      startFromDouble(input, *solved, metric);
       flow = solveConformalFlow(metric, target, withProgress(options, "circle domain from the double"), &log);
     } catch (const ConvergenceError& again) {
-      throw ConvergenceError(std::string(failed.what()) + "; from the double's sphere: " + again.what());
+      if (!solved) throw ConvergenceError(std::string(failed.what()) + "; from the double's sphere: " + again.what());
+      // The double converged but its boundary edges flipped: take its half, subdivided on the mirror (§3.3).
+      if (options.progress)
+        options.progress(std::string("circle domain from the double: ") + again.what() +
+                         "; taking the half of the double's sphere");
+      try {
+        return circleDomainFromHalf(input, *solved, options, report);
+      } catch (const ConvergenceError& half) {
+        throw ConvergenceError(std::string(failed.what()) + "; from the double's sphere: " + again.what() +
+                               "; its half: " + half.what());
+      }
     }
   }
   accumulate(report, flow);
@@ -530,6 +597,14 @@ ComponentUniformization uniformizeComponents(const IntrinsicTriangulation& input
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+std::string correspondenceUnavailable(const Uniformization& u) {
+  if (u.insertedVertices.empty()) return "";
+  const bool circles = u.report.target == UniformizationTarget::CircleDomain;
+  return std::string(circles ? "the circle domain has " : "the surface with geodesic boundary has ") +
+         std::to_string(u.insertedVertices.size()) +
+         " boundary vertices inserted where the double's flipped edges cross its mirror";
 }
 
 }  // namespace conformesh::intrinsic

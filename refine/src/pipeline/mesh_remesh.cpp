@@ -208,7 +208,11 @@ class MeshRemeshPipeline {
   // kMaxFlipsPerEdge (docs/robustness.md); lion.off's flow makes 5·10⁶ flips on 2.2·10⁴ edges (a flip cycle of the
   // flow), where the pull-back ran for hours and past 1.2 GB. Refused with the count, before refining.
   static constexpr double kMaxFlipsPerEdge = 50;
+  // A circle domain with inserted boundary vertices (the half of the double) has no correspondence: refused too.
   void checkFlipLog(const Uniformization& u, const IntrinsicTriangulation& t0) const {
+    const std::string gap = correspondenceUnavailable(u);
+    if (!gap.empty())
+      throw ConvergenceError("remesh: " + gap + "; use the default route --refine-in input");
     const double flips = static_cast<double>(u.correspondence.flips().size()), edges = t0.mesh.nEdges();
     if (flips <= kMaxFlipsPerEdge * edges) return;
     throw ConvergenceError("remesh: the flow made " + std::to_string(u.correspondence.flips().size()) +

@@ -126,6 +126,13 @@ UniformizedMetric uniformizeMetric(const SmoothMetric& metric, const RemeshOptio
   } else {
     say("uniformizing T0 (" + std::to_string(n0) + " vertices) by discrete Ricci flow");
     out.uniformization = uniformize(out.t0, uni);
+    // The pull-back maps every vertex of T1* through the correspondence, which the half of the double lacks.
+    const std::string gap = correspondenceUnavailable(out.uniformization);
+    if (!gap.empty())
+      throw ConvergenceError(
+          "remesh: " + gap +
+          ", and the pull-back to the chart needs a correspondence that carries "
+          "them (--disk-target keep-boundary or another --t0-resolution may avoid the flipped boundary edges)");
   }
   out.uniformizeSeconds = secondsSince(t);
   return out;

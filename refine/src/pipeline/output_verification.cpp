@@ -1,6 +1,7 @@
 // output_verification.cpp — the checks of output_verification.h.
 #include "conformesh/refine/pipeline/output_verification.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -105,9 +106,65 @@ OutputVerification verifyRefinement(const IntrinsicTriangulation& input, const R
   return v;
 }
 
+namespace {
+
+// A half of the double with geodesic boundary (hyperbolic, flat cylinder; docs/ricci_flow.md §3.4): the angle sums
+// recomputed from the written lengths, 2π inside and π on the boundary, within the flow's tolerance.
+void checkGeodesicBoundary(const Uniformization& u, OutputVerification& v) {
+  const HalfedgeMesh& m = u.uniform.mesh;
+  const std::vector<double> sums = angleSums(u.uniform);
+  double worst = 0;
+  int at = -1;
+  for (int w = 0; w < m.nVertices(); ++w) {
+    const double e = std::abs(sums[w] - (m.isBoundaryVertex(w) ? M_PI : 2 * M_PI));
+    if (!(e <= worst)) worst = e, at = w;
+  }
+  if (worst <= u.report.effectiveTolerance) return;
+  std::ostringstream s;
+  s.precision(3);
+  s << "the half of the double's angle sums are off by " << worst << " rad at vertex " << at << " (2pi inside, pi on "
+    << "the geodesic boundary; tolerance " << u.report.effectiveTolerance << ")";
+  v.failures.push_back(s.str());
+}
+
+// The half of the double (uniformization.h, insertedVertices): the inserted vertices appended and on the loop, the
+// loop on the unit circle, the recomputed residual within the tolerance.
+void checkInsertedVertices(const Uniformization& u, OutputVerification& v) {
+  const HalfedgeMesh& m = u.uniform.mesh;
+  const int inserted = static_cast<int>(u.insertedVertices.size()), first = m.nVertices() - inserted;
+  for (int i = 0; i < inserted; ++i) {
+    const int q = u.insertedVertices[i].vertex;
+    if (q == first + i && m.isBoundaryVertex(q)) continue;
+    v.failures.push_back("inserted vertex " + std::to_string(i) + " is vertex " + std::to_string(q) + ", expected " +
+                         std::to_string(first + i) + " on the boundary");
+    return;
+  }
+  if (u.report.target != UniformizationTarget::CircleDomain) {
+    checkGeodesicBoundary(u, v);
+    return;
+  }
+  double circle = 0;
+  if (u.positions.size() == static_cast<std::size_t>(m.nVertices()))
+    for (int w = 0; w < m.nVertices(); ++w)
+      if (m.isBoundaryVertex(w)) circle = std::max(circle, std::abs(u.positions[w].norm() - 1));
+  std::ostringstream s;
+  s.precision(3);
+  if (u.positions.size() != static_cast<std::size_t>(m.nVertices()))
+    s << "the circle domain has " << u.positions.size() << " positions for " << m.nVertices() << " vertices";
+  else if (!(circle <= 1e-8))
+    s << "the circle domain's boundary is off the unit circle by " << circle << " (tolerance 1e-08)";
+  else if (!(u.report.maxResidual <= u.report.effectiveTolerance))
+    s << "the circle domain's max |K - K^| " << u.report.maxResidual << " exceeds the tolerance "
+      << u.report.effectiveTolerance;
+  if (!s.str().empty()) v.failures.push_back(s.str());
+}
+
+}  // namespace
+
 OutputVerification verifyUniformization(const Uniformization& u) {
   OutputVerification v;
   checkTriangles(u.uniform, v);
+  if (!u.insertedVertices.empty()) checkInsertedVertices(u, v);
   for (std::size_t i = 0; i < u.lambda.size(); ++i)
     if (!std::isfinite(u.lambda[i])) {
       v.failures.push_back("lambda of vertex " + std::to_string(i) + " is not finite");

@@ -24,7 +24,11 @@ ImagePathPullBack::ImagePathPullBack(const SubdividedInput& input, const Uniform
       extraBisections_(extraBisections),
       n0_(input.t0.mesh.nVertices()),
       inputSignposts_(initialSignposts(u.uniform)),
-      model_(u.uniform.background) {}
+      model_(u.uniform.background) {
+  // T0*'s own vertices other than T0's would be mapped through a correspondence of 0 faces (uniformization.h).
+  const std::string gap = correspondenceUnavailable(u);
+  if (!gap.empty()) throw ConvergenceError("pull-back: " + gap + "; no correspondence maps them to the input");
+}
 
 void ImagePathPullBack::run(MeshRemeshResult& out) {
   out.lambda = refined_.lambda;

@@ -146,6 +146,14 @@ nlohmann::json uniformizedJson(const intrinsic::Uniformization& u) {
     j["centring_iterations"] = r.centringIterations;
   }
   if (r.target == intrinsic::UniformizationTarget::FlatCylinder) j["cylinder_height"] = r.cylinderHeight;
+  if (!u.insertedVertices.empty()) {
+    // The half of the double (uniformization.h): vertices V.. of T0* on input boundary edges.
+    nlohmann::json inserted = nlohmann::json::array();
+    for (const auto& q : u.insertedVertices)
+      inserted.push_back({{"vertex", q.vertex}, {"input_edge", q.inputEdge}, {"parameter", q.parameter}});
+    j["inserted_boundary_vertex_count"] = u.insertedVertices.size();
+    j["inserted_boundary_vertices"] = inserted;
+  }
   return j;
 }
 

@@ -13,14 +13,18 @@
 
 #include "conformesh/intrinsic/flow/uniformization.h"
 #include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/mesh_components.h"
 #include "conformesh/intrinsic/mesh/mesh_data.h"
 #include "conformesh/intrinsic/mesh/mesh_generators.h"
 #include "flow/disk_double.h"
+#include "support/gauss_bonnet_bound.h"
 
 using namespace conformesh::intrinsic;
 using conformesh::intrinsic::detail::DiskDouble;
+using conformesh::intrinsic::detail::DiskHalf;
 using conformesh::intrinsic::detail::doubleDisk;
+using conformesh::intrinsic::detail::halveDoubleSphere;
 
 namespace {
 
@@ -131,5 +135,149 @@ TEST_CASE("the doubles of CGAL's disks whose circle-domain flow fails are unifor
       (area > 0 ? positive : negative) += 1;
     }
     std::printf("  disk faces straight-line at the projected points: %d positive, %d negative\n", positive, negative);
+  }
+}
+
+namespace {
+
+// The half's invariants as a circle domain, from its own lengths and positions (docs/ricci_flow.md §3.3): boundary
+// vertices on the unit circle, interior angle sums 2π, each boundary angle sum the inscribed polygon's
+// π − (φ_prev + φ_next), φ = asin(ℓ/2), Gauss–Bonnet to round-off, every face a Euclidean triangle, and every length
+// the straight distance of the written positions (a straight-line triangulation, kept by its Lawson flips).
+void checkHalfIsCircleDomain(const IntrinsicTriangulation& t, const std::vector<Eigen::Vector3d>& z) {
+  const HalfedgeMesh& m = t.mesh;
+  REQUIRE(m.components().size() == 1);
+  CHECK(m.components()[0].genus == 0);
+  const std::vector<std::vector<int>> loops = m.boundaryLoops();
+  REQUIRE(loops.size() == 1);
+  const std::vector<int>& loop = loops[0];
+  const int k = static_cast<int>(loop.size());
+  const std::vector<double> sums = angleSums(t);
+  double circle = 0, interior = 0, boundary = 0, straight = 0;
+  for (int v = 0; v < m.nVertices(); ++v)
+    if (m.isBoundaryVertex(v))
+      circle = std::max(circle, std::abs(z[v].norm() - 1));
+    else
+      interior = std::max(interior, std::abs(sums[v] - 2 * M_PI));
+  for (int i = 0; i < k; ++i) {
+    const double into = t.length(loop[(i + k - 1) % k]), out = t.length(loop[i]);
+    boundary = std::max(boundary, std::abs(sums[m.tail(loop[i])] - (M_PI - std::asin(into / 2) - std::asin(out / 2))));
+  }
+  int violating = 0;
+  for (int f = 0; f < m.nFaces(); ++f) {
+    const double a = t.length(HalfedgeMesh::halfedge(f, 0)), b = t.length(HalfedgeMesh::halfedge(f, 1)),
+                 c = t.length(HalfedgeMesh::halfedge(f, 2));
+    violating += !(a < b + c && b < c + a && c < a + b);
+  }
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e);
+    straight = std::max(straight, std::abs(t.edgeLengths[e] - (z[m.tip(h)] - z[m.tail(h)]).norm()));
+  }
+  const double gaussBonnet = curvatureTotals(t).gaussBonnetResidual;
+  std::printf(
+      "  %d vertices, %d faces, %d on the loop; unit circle to %.3g, interior angle sums to %.3g, boundary angle sums "
+      "to %.3g, lengths straight to %.3g, Gauss-Bonnet %.3g\n",
+      m.nVertices(), m.nFaces(), k, circle, interior, boundary, straight, gaussBonnet);
+  CHECK(circle < 1e-10);
+  CHECK(interior < 1e-10);
+  CHECK(boundary < 1e-10);
+  CHECK(straight < 1e-12);
+  CHECK(violating == 0);
+  CHECK(std::abs(gaussBonnet) < conformesh::testing::gaussBonnetRoundoff(m.nFaces()));
+}
+
+}  // namespace
+
+TEST_CASE(
+    "the half of the double is a circle domain with a boundary vertex where each crossing edge meets the mirror") {
+  // CGAL's three disks whose own circle-domain flow fails, and fails again from the double's start (blob.off,
+  // corner_tris_with_hole.off, corner_with_hole.off: one boundary loop each despite the names; ChineseDragon-10kv.off
+  // has two loops, an annulus, out of scope). The half of the double's sphere is checked as a circle domain, each new
+  // vertex is mapped by the double's correspondence onto an input boundary edge, and the half's boundary loop visits,
+  // between consecutive input boundary vertices a, b, exactly the new vertices on edge ab in increasing parameter.
+  for (const char* file : {"blob.off", "corner_tris_with_hole.off", "corner_with_hole.off"}) {
+    CAPTURE(file);
+    const IntrinsicTriangulation disk = toTriangulation(readMesh(dataFile(file)));
+    const DiskDouble d = doubleDisk(disk);
+    const Uniformization s = uniformize(d.surface);
+    const DiskHalf half = halveDoubleSphere(disk, d, s);
+    const HalfedgeMesh& m = half.plane.mesh;
+    const int n = disk.mesh.nVertices();
+    std::printf("%s half: %d crossing edges (%d self-mirror), %d new boundary vertices, %d plane flips\n", file,
+                half.crossingEdges, half.selfMirrorCrossings, static_cast<int>(half.inserted.size()),
+                half.delaunayFlips);
+    CHECK(half.crossingEdges > 0);
+    REQUIRE(m.nVertices() == n + static_cast<int>(half.inserted.size()));
+    for (int v = 0; v < n; ++v) CHECK(m.isBoundaryVertex(v) == disk.mesh.isBoundaryVertex(v));
+    checkHalfIsCircleDomain(half.plane, half.positions);
+    std::vector<std::vector<std::pair<double, int>>> onEdge(disk.mesh.nEdges());
+    for (std::size_t i = 0; i < half.inserted.size(); ++i) {
+      const auto& q = half.inserted[i];
+      CHECK(q.vertex == n + static_cast<int>(i));  // appended after the input's vertices, in order
+      CHECK(m.isBoundaryVertex(q.vertex));
+      CHECK(std::abs(q.offEdge) < 1e-8);
+      CHECK(q.parameter > 0);
+      CHECK(q.parameter < 1);
+      onEdge[q.inputEdge].emplace_back(q.parameter, q.vertex);
+    }
+    // The loop order. (Both loop lists are stored: a range-for over boundaryLoops()[0] would read a destroyed
+    // temporary.)
+    const std::vector<int> loop = m.boundaryLoops()[0], inputLoop = disk.mesh.boundaryLoops()[0];
+    const int k = static_cast<int>(loop.size());
+    int start = 0;
+    while (m.tail(loop[start]) >= n) ++start;
+    for (int i = 0; i < k;) {
+      const int a = m.tail(loop[(start + i) % k]);
+      std::vector<int> between;
+      int j = i + 1;
+      while (m.tail(loop[(start + j) % k]) >= n) between.push_back(m.tail(loop[(start + j++) % k]));
+      const int b = m.tail(loop[(start + j) % k]);
+      int edge = -1, tail = -1;
+      for (const int h : inputLoop)
+        if ((disk.mesh.tail(h) == a && disk.mesh.tip(h) == b) || (disk.mesh.tail(h) == b && disk.mesh.tip(h) == a)) {
+          edge = disk.mesh.edge(h);
+          tail = disk.mesh.tail(disk.mesh.edgeHalfedge(edge));
+        }
+      CAPTURE(a, b);
+      REQUIRE(edge >= 0);
+      std::vector<std::pair<double, int>> expected = onEdge[edge];
+      std::sort(expected.begin(), expected.end());
+      if (tail != a) std::reverse(expected.begin(), expected.end());
+      REQUIRE(expected.size() == between.size());
+      for (std::size_t t = 0; t < between.size(); ++t) CHECK(expected[t].second == between[t]);
+      i = j;
+    }
+  }
+}
+
+TEST_CASE("uniformize returns the half of the double for CGAL's disks whose restart fails too") {
+  // The public route (uniformization.h): the input's vertices are vertices 0..V−1 of T0*, the inserted ones appended
+  // and listed in insertedVertices on input boundary edges; the correspondence is empty (it cannot carry them).
+  for (const char* file : {"blob.off", "corner_tris_with_hole.off", "corner_with_hole.off"}) {
+    CAPTURE(file);
+    const IntrinsicTriangulation disk = toTriangulation(readMesh(dataFile(file)));
+    UniformizationOptions options;
+    options.flow.tolerance = 1e-10;
+    const Uniformization u = uniformize(disk, options);
+    const int n = disk.mesh.nVertices();
+    std::printf("%s: uniformize gives %d inserted vertices, residual %.3g\n", file,
+                static_cast<int>(u.insertedVertices.size()), u.report.maxResidual);
+    CHECK(u.report.target == UniformizationTarget::CircleDomain);
+    REQUIRE_FALSE(u.insertedVertices.empty());
+    REQUIRE(u.uniform.mesh.nVertices() == n + static_cast<int>(u.insertedVertices.size()));
+    CHECK(u.correspondence.nFaces() == 0);
+    CHECK(u.report.maxResidual <= 1e-10);
+    CHECK(u.report.effectiveTolerance == 1e-10);
+    REQUIRE(u.positions.size() == static_cast<std::size_t>(u.uniform.mesh.nVertices()));
+    REQUIRE(u.lambda.size() == u.positions.size());
+    for (double l : u.lambda) CHECK(std::isfinite(l));
+    for (std::size_t i = 0; i < u.insertedVertices.size(); ++i) {
+      const auto& q = u.insertedVertices[i];
+      CHECK(q.vertex == n + static_cast<int>(i));
+      CHECK(disk.mesh.isBoundaryEdge(q.inputEdge));
+    }
+    // Vertex i of the input is vertex i of T0*: the input's interior vertices stay interior, its boundary boundary.
+    for (int v = 0; v < n; ++v) CHECK(u.uniform.mesh.isBoundaryVertex(v) == disk.mesh.isBoundaryVertex(v));
+    checkHalfIsCircleDomain(u.uniform, u.positions);
   }
 }

@@ -54,7 +54,10 @@ OutputVerification verifyMetricRemesh(const RemeshResult& result, const Verifica
 OutputVerification verifyRefinement(const intrinsic::IntrinsicTriangulation& input, const RefineResult& result,
                                     const VerificationTolerances& tolerances = {});
 
-// `uniformize`: triangle inequalities of T0* in its background and a finite λ at every vertex.
+// `uniformize`: triangle inequalities of T0* in its background and a finite λ at every vertex; for a circle domain
+// with inserted boundary vertices (the half of the double, uniformization.h) also: each inserted vertex appended after
+// the input's (ids V, V+1, …) and on the boundary, every boundary vertex on the unit circle to 1e-8, and the residual
+// within the tolerance.
 OutputVerification verifyUniformization(const intrinsic::Uniformization& u);
 
 // The name under which a command writes an output that failed verification when asked to keep it:
