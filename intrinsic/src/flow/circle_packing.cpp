@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "conformesh/intrinsic/errors.h"
+#include "flow/linalg/supernodal_cholesky.h"
 
 namespace conformesh::intrinsic {
 
@@ -548,7 +549,7 @@ class CirclePackingFlow {
   double tolerance_ = 0;
   Eigen::VectorXd r_;
   double maxAbs_ = 0, norm2_ = 0;
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> solver_;
+  SupernodalCholesky solver_;
   bool analyzed_ = false;
   std::vector<Eigen::Triplet<double>> triplets_;
   SparseMatrix H_;

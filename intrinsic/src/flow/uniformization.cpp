@@ -19,6 +19,7 @@
 #include "flow/disk_double.h"
 #include "flow/geodesic_half.h"
 #include "flow/inscribed_disk.h"
+#include "flow/linalg/supernodal_cholesky.h"
 #include "flow/sphere_puncture.h"
 #include "flow/uniformization_support.h"
 
@@ -132,7 +133,8 @@ double annulusLogRadiusRatioLowerBound(const IntrinsicTriangulation& tri, const 
     Eigen::SparseMatrix<double> L(n, n);
     L.setFromTriplets(entries.begin(), entries.end());
     // One sparse Cholesky factorization, as in one Newton step of the flow.
-    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> solver(L);
+    SupernodalCholesky solver;
+    solver.compute(L);
     if (solver.info() != Eigen::Success) return std::numeric_limits<double>::quiet_NaN();
     const Eigen::VectorXd x = solver.solve(rhs);
     if (!x.allFinite()) return std::numeric_limits<double>::quiet_NaN();

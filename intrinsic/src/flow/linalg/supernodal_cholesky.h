@@ -1,6 +1,7 @@
 // supernodal_cholesky.h — Eigen's CHOLMOD supernodal Cholesky wrapper, opened up for the Ricci flow's Newton systems:
 // access to the factor (for SinglePrecisionFactor) and a symbolic analysis in a given elimination order (for
-// nestedDissectionOrder). Private to the flow (flow_solver_cache.cpp); touches only the CHOLMOD state it owns.
+// nestedDissectionOrder). Private to the flow (flow_solver_cache.cpp, circle_packing.cpp, the annulus bound); touches only the CHOLMOD state it
+// owns.
 #pragma once
 
 #include <vector>
@@ -11,9 +12,13 @@
 namespace conformesh::intrinsic {
 
 // Eigen's CHOLMOD wrapper with access to the factor it holds (for SinglePrecisionFactor), and a symbolic analysis in a
-// given elimination order (nestedDissectionOrder at large sizes, fill_reducing_order.h).
+// given elimination order (nestedDissectionOrder at large sizes, fill_reducing_order.h), silent.
 class SupernodalCholesky : public Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
  public:
+  // CHOLMOD's own messages off: it prints "CHOLMOD warning: matrix not positive definite" on stdout (through printf),
+  // which corrupted `--json` output; every caller reports a failed factorization itself (info(), with the step).
+  SupernodalCholesky() { cholmod().print = 0; }
+
   const cholmod_factor* factor() const { return m_cholmodFactor; }
 
   using Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower>::analyzePattern;
