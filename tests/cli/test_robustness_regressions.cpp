@@ -250,3 +250,56 @@ TEST_CASE("uniformize blob.off, corner_with_hole.off: the half of the double, in
                      "route --refine-in input") != std::string::npos);
   }
 }
+
+// Issue #18 item 2, geodesic boundary through the double (docs/ricci_flow.md §3.4): elephant-with-holes.off (genus 3,
+// 106 boundary loops, 3-edge holes among them) stopped at Newton step 1 with a non-positive-definite Hessian — a face
+// degenerated against a boundary edge that may not flip. Its double (closed, genus 2·3 + 106 − 1 = 111) uniformizes
+// with every edge flippable, and its half is the hyperbolic metric with geodesic boundary: by Gauss–Bonnet its area is
+// −2πχ = 220π exactly (χ = 2 − 2·3 − 106), the closed form checked here against the written lengths' total.
+TEST_CASE("uniformize elephant-with-holes.off (genus 3, 106 loops): hyperbolic with geodesic boundary via the double") {
+  const fs::path out = conformesh::testing::scratchDir() / "elephant_with_holes_hyperbolic.ply";
+  const auto r = runConformesh("-q uniformize " + mesh("elephant-with-holes.off") + " -o " + out.string() + " --json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);  // also: nothing but the JSON on stdout (CHOLMOD's warning was)
+  CHECK(j["target"] == "hyperbolic-geodesic-boundary");
+  CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
+  CHECK(j["verification"]["passed"] == true);
+  const int inserted = j["inserted_boundary_vertex_count"].get<int>();
+  CHECK(inserted > 0);
+  CHECK(j["inserted_boundary_vertices"].size() == static_cast<std::size_t>(inserted));
+  for (const auto& q : j["inserted_boundary_vertices"]) {
+    CHECK(q["input_edge"].get<int>() >= 0);
+    CHECK(q["parameter"].get<double>() >= 0);
+    CHECK(q["parameter"].get<double>() <= 1);
+  }
+  const int nF = j["verification"]["faces_checked"].get<int>();
+  CHECK(nF == 4463 + inserted);  // F = 2V − V_∂ − 2χ: a vertex added on the boundary adds one face
+  const double area = 220 * M_PI;
+  CHECK(std::abs(j["total_area"].get<double>() - area) <= 1e-9 * area);
+  // Routes that need the flow's correspondence are refused, naming why.
+  const auto c = runConformesh("-q uniformize " + mesh("elephant-with-holes.off") + " -o " + out.string() +
+                               " --correspondence " + (conformesh::testing::scratchDir() / "eh.json").string());
+  CHECK(c.status == 1);
+  CHECK(c.err.find("the surface with geodesic boundary has " + std::to_string(inserted) + " boundary vertices") !=
+        std::string::npos);
+}
+
+// ChineseDragon-10kv.off (an annulus) stopped at a degenerate face against one of its boundary edges in the circle
+// domain's flow. The circle domain's flow failing, the annulus goes to its flat cylinder (the same conformal class by
+// z = e^{w}), whose boundary vertices target π: both ends closed geodesics of one length, circumference 2π.
+TEST_CASE("uniformize ChineseDragon-10kv.off (annulus): the flat cylinder when the circle domain's flow fails") {
+  const fs::path out = conformesh::testing::scratchDir() / "chinese_dragon_cylinder.ply";
+  const auto r = runConformesh("-q uniformize " + mesh("ChineseDragon-10kv.off") + " -o " + out.string() + " --json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["target"] == "flat-cylinder");
+  CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
+  CHECK(j["verification"]["passed"] == true);
+  const int nF = j["verification"]["faces_checked"].get<int>();
+  const double roundOff = 16 * nF * 2.220446049250313e-16 * M_PI;
+  CHECK(j["max_interior_angle_sum_error"].get<double>() <= 1e-10);
+  CHECK(std::abs(j["gauss_bonnet_residual"].get<double>()) <= roundOff);
+  CHECK(j["cylinder_height"].get<double>() > 0);
+}

@@ -18,7 +18,8 @@ struct DiskDouble {
   int diskFaces = 0;               // faces 0..diskFaces−1 are the disk's, the rest their mirror images
 };
 
-// The double of `disk` (one component, genus 0, one boundary loop; any background, lengths copied): mirror face of
+// The double of `disk` (one component with boundary: a disk for the circle domains, any genus and number of loops for
+// the geodesic-boundary targets, geodesic_half.h; any background, lengths copied): mirror face of
 // (a, b, c) is (c', b', a') (reversed, so the double is oriented), glued to the disk along the boundary edges; an
 // interior edge between two boundary vertices appears twice (a multi-edge, kept apart by edge ids). Throws InputError
 // when `disk` has no boundary.
