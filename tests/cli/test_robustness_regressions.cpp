@@ -303,3 +303,22 @@ TEST_CASE("uniformize ChineseDragon-10kv.off (annulus): the flat cylinder when t
   CHECK(std::abs(j["gauss_bonnet_residual"].get<double>()) <= roundOff);
   CHECK(j["cylinder_height"].get<double>() > 0);
 }
+
+// cylinder_locally_refined.off (a disk): its circle-domain flow crawled for 22 Newton steps of t down to 1.5·10⁻⁸ at
+// max |r| ≈ 5·10⁻³, whose trial steps flipped 4·10⁶ edges until a Ptolemy length overflowed (24 s, exit 1). A crawl is
+// now a stall (docs/ricci_flow.md §2), the restart from the double crawls too, and the half of the double's sphere is
+// the circle domain: boundary vertices inserted, the circle and the angle sums verified from the written file.
+TEST_CASE("uniformize cylinder_locally_refined.off: a crawling flow ends as a stall, the half of the double follows") {
+  const fs::path out = conformesh::testing::scratchDir() / "cylinder_locally_refined_disk.ply";
+  const auto r =
+      runConformesh("-q uniformize " + mesh("cylinder_locally_refined.off") + " -o " + out.string() + " --json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["target"] == "circle-domain");
+  CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
+  CHECK(j["verification"]["passed"] == true);
+  CHECK(j["inserted_boundary_vertex_count"].get<int>() > 0);
+  const int nF = j["verification"]["faces_checked"].get<int>();
+  CHECK(nF == 16442 + j["inserted_boundary_vertex_count"].get<int>());  // F = 2V − V_∂ − 2χ
+}

@@ -626,6 +626,42 @@ void NewtonFlowSolver::throwStalled(const std::vector<double>& u0, const NewtonS
 
 // === stopping tests
 
+// A flow whose line search accepts only tiny steps without progress is stalled in all but name: each trial step still
+// flips (cylinder_locally_refined.off: 22 Newton steps of t from 2⁻¹⁰ down to 1.5·10⁻⁸ at max |r| ≈ 5.2·10⁻³, their
+// trials flipping 4·10⁶ edges in 20 s before a Ptolemy length overflowed). Eight consecutive steps of t < 2⁻⁸ that
+// together reduce max |r| by less than 1 % end it: first by switching on a circle domain's Möbius gauge if it is off
+// (the kernel is one cause of crawling), then as a stall, so that the caller's fallbacks (the double) start at once.
+// Newton in its quadratic region takes t = 1; a run of tiny steps that makes progress is left alone.
+void NewtonFlowSolver::checkCrawl(double t, double before) {
+  constexpr double kCrawlStep = 1.0 / 256, kProgress = 0.99;
+  constexpr int kCrawlRun = 8;
+  if (!(t < kCrawlStep)) {
+    crawlSteps_ = 0;
+    return;
+  }
+  if (crawlSteps_++ == 0) crawlFrom_ = before;
+  if (crawlSteps_ < kCrawlRun) return;
+  if (!(maxAbs_ > kProgress * crawlFrom_)) {
+    crawlSteps_ = 0;
+    return;
+  }
+  crawlSteps_ = 0;
+  if (gaugeLoop_ >= 0 && !gaugeOn_) {
+    activateGaugeRows();
+    for (int k = 0; k < 2; ++k) gaugeTarget_[k] = gaugeAngle(k);
+    evaluateResidual(maxAbs_, norm2_);
+    patternValid_ = false;
+    return;
+  }
+  std::ostringstream msg;
+  msg.precision(3);
+  msg << "discrete Ricci flow stalled at Newton step " << report_.newtonSteps << ": " << kCrawlRun
+      << " steps of length below 2^-8 reduced max |Θ̂ − Θ| only from " << crawlFrom_ << " to " << maxAbs_
+      << " rad, tolerance " << report_.effectiveTolerance << "; " << worstVertex();
+  throw ConvergenceError(msg.str());
+}
+
+
 void NewtonFlowSolver::checkStepCap() const {
   if (report_.newtonSteps < options_.maxNewtonSteps) return;
   std::ostringstream msg;
@@ -642,6 +678,7 @@ bool NewtonFlowSolver::finishStep(const NewtonStepInfo& info, double t) {
   ++report_.newtonSteps;
   report_.maxResidual = maxAbs_;
   if (options_.onStep) options_.onStep(done);
+  checkCrawl(t, info.maxResidual);
   if (options_.stopAfterStep && maxAbs_ > report_.effectiveTolerance && options_.stopAfterStep(work_->sums, maxAbs_)) {
     report_.stoppedByCaller = true;
     return true;

@@ -71,6 +71,7 @@ class NewtonFlowSolver {
   void restoreStart(const std::vector<double>& u0);
   bool stopAtDegenerateStart(const std::vector<double>& u0);
   bool crawlsAlongMoebiusKernel(double t) const;
+  void checkCrawl(double t, double before);
   void switchOnGaugeAtStall(const std::vector<double>& u0);
   bool polishInExtendedPrecision(const std::vector<double>& u0);  // true: converged in extended precision
   [[noreturn]] void throwStalled(const std::vector<double>& u0, const NewtonStepInfo& info);
@@ -128,6 +129,8 @@ class NewtonFlowSolver {
   bool patternValid_ = false;
 
   double maxAbs_ = 0, norm2_ = 0;  // max |r| and |r|² at the current u
+  int crawlSteps_ = 0;             // consecutive accepted steps of t < kCrawlStep (checkCrawl)
+  double crawlFrom_ = 0;           // max |r| when they began
   // Energy line search: E, Σ|terms| and the slope rᵀδ at the step's start u0.
   double energy0_ = 0, slope0_ = 0;
 };
