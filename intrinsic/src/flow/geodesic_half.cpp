@@ -210,6 +210,7 @@ void DoubleHalver::addSplitFace(int f) {
   const int w = crossingFirst ? m_.tip(h1) : m_.tip(h0);
   const double a = d_.length(hw), b = d_.length(h1), c = d_.length(hc);
   noteAsymmetry(a, b);
+  ++out_.splitFaces;
   const auto [mid, halfId] = split(hc, v);
   const int median = newEdge(medianLength(d_.background, a, b, c));
   if (crossingFirst) {
@@ -250,6 +251,7 @@ void DoubleHalver::addTrapezoid(int f) {
   if (bm != mirror_[b] || am != mirror_[a]) throw notSymmetric(f, "a trapezoid whose copies are not its mirror images");
   const int hab = sideH[r], hb = sideH[(r + 1) % 4], hcopy = sideH[(r + 2) % 4], ha = sideH[(r + 3) % 4];
   noteAsymmetry(d_.length(hab), d_.length(hcopy));
+  ++out_.trapezoids;
   // |a b'|: the diagonal when it is a–b', else |b a'| (its mirror image).
   const double diagonal = d_.length(hd);
   const double bb = d_.length(hb), aa = d_.length(ha), ab = d_.length(hab);
@@ -273,6 +275,7 @@ void DoubleHalver::addSplitLoop(int f, bool firstHalf) {
   const int p = m_.tail(hl), w = m_.tip(h1);
   const double a = d_.length(h2), b = d_.length(h1), c = d_.length(hl);
   noteAsymmetry(a, b);
+  ++out_.splitLoops;
   const auto [mid, halfId] = split(hl, p);
   const int median = newEdge(medianLength(d_.background, a, b, c));
   if (firstHalf) {

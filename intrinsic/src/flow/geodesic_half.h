@@ -15,6 +15,7 @@ struct GeodesicHalf {
   std::vector<int> splitFrom;   // per inserted vertex nInput + i: the input vertex v whose edge to its mirror it halves
   std::vector<int> splitHalfedge;  // per inserted vertex: a halfedge of `doubled` on that edge (v–v', either way)
   double asymmetry = 0;  // max relative |ℓ(w, v) − ℓ(w, v')| over the split faces: the double's round-off
+  int splitFaces = 0, trapezoids = 0, splitLoops = 0;  // how many of each pattern were halved
 };
 
 // `doubled`: a closed triangulation whose vertices 0..nInput−1 are the input's (those with mirror[v] == v on the

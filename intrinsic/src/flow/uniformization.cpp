@@ -516,8 +516,10 @@ Uniformization geodesicBoundaryFromDouble(const IntrinsicTriangulation& input, c
     throw ConvergenceError(message.str());
   }
   if (options.progress)
-    options.progress("double: halved, " + std::to_string(half.splitFrom.size()) +
-                     " boundary vertices inserted where its edges cross the mirror");
+    options.progress("double: halved, " + std::to_string(out.insertedVertices.size()) +
+                     " boundary vertices inserted where its edges cross the mirror (faces split " +
+                     std::to_string(half.splitFaces) + ", trapezoids " + std::to_string(half.trapezoids) +
+                     ", loops " + std::to_string(half.splitLoops) + ")");
   out.report = report;
   return out;
 }
