@@ -153,6 +153,7 @@ class DoubleHalver {
         {keep(HalfedgeMesh::halfedge(f, 0)), keep(HalfedgeMesh::halfedge(f, 1)), keep(HalfedgeMesh::halfedge(f, 2))});
   }
   void addSplitFace(int f);
+  void addBisectedHalf(int hc, bool keepTail, int owner);
   void addTrapezoid(int f);
   void addSplitLoop(int f, bool firstHalf);
   GeodesicHalf build();
@@ -198,28 +199,32 @@ std::array<int, 2> DoubleHalver::split(int hc, int v) {
   return it->second;
 }
 
+// The face of crossing halfedge hc = X → Y with apex w, bisected from w to hc's midpoint (the median, by symmetry the
+// mirror's segment): the half (X, mid, w) when `keepTail`, else (mid, Y, w); `owner` the input vertex it is charged to.
+void DoubleHalver::addBisectedHalf(int hc, bool keepTail, int owner) {
+  const int hn = HalfedgeMesh::next(hc), hp = HalfedgeMesh::prev(hc);
+  const int x = m_.tail(hc), y = m_.tip(hc), w = m_.tip(hn);
+  const double a = d_.length(hp), b = d_.length(hn), c = d_.length(hc);
+  noteAsymmetry(a, b);
+  const auto [mid, halfId] = split(hc, owner);
+  const int median = newEdge(medianLength(d_.background, a, b, c));
+  if (keepTail) {
+    faces_.push_back({x, mid, w});
+    ids_.push_back({halfId, median, keep(hp)});
+  } else {
+    faces_.push_back({mid, y, w});
+    ids_.push_back({halfId, keep(hn), median});
+  }
+}
+
 // A face (v, v', w), w on the boundary: its input half (v, midpoint, w), split along the median from w.
 void DoubleHalver::addSplitFace(int f) {
   int k0 = 0;
   while (!isInput(m_.faceVertex(f, k0))) ++k0;
-  const int h0 = HalfedgeMesh::halfedge(f, k0), h1 = HalfedgeMesh::next(h0), h2 = HalfedgeMesh::next(h1);
-  const int v = m_.tail(h0);
-  const bool crossingFirst = m_.tip(h0) == mirror_[v];  // (v, v', w), else (v, w, v')
-  const int hc = crossingFirst ? h0 : h2;               // v–v'
-  const int hw = crossingFirst ? h2 : h0;               // w–v, kept; h1 is v'–w, its mirror image
-  const int w = crossingFirst ? m_.tip(h1) : m_.tip(h0);
-  const double a = d_.length(hw), b = d_.length(h1), c = d_.length(hc);
-  noteAsymmetry(a, b);
+  const int h0 = HalfedgeMesh::halfedge(f, k0), v = m_.tail(h0);
+  const int hc = m_.tip(h0) == mirror_[v] ? h0 : HalfedgeMesh::prev(h0);  // v → v', else v' → v
   ++out_.splitFaces;
-  const auto [mid, halfId] = split(hc, v);
-  const int median = newEdge(medianLength(d_.background, a, b, c));
-  if (crossingFirst) {
-    faces_.push_back({v, mid, w});
-    ids_.push_back({halfId, median, keep(hw)});
-  } else {
-    faces_.push_back({v, w, mid});
-    ids_.push_back({keep(hw), median, halfId});
-  }
+  addBisectedHalf(hc, m_.tail(hc) == v, v);
 }
 
 // Two crossing edges a–a', b–b' that bound one quad (a, b, b', a') — an isosceles trapezoid, always cocircular, so
@@ -266,25 +271,13 @@ void DoubleHalver::addTrapezoid(int f) {
   ids_.push_back({diag, rim, halfA});
 }
 
-// A face (p, p, w) bisected from w to the midpoint of its loop hl: p(c0) → p(c1) → w; the half kept is
-// (p(c0), mid, w) when `firstHalf`, else (mid, p(c1), w).
+// A face (p, p, w) bisected from w to the midpoint of its loop hl = p(c0) → p(c1); the half kept is (p(c0), mid, w)
+// when `firstHalf`, else (mid, p(c1), w).
 void DoubleHalver::addSplitLoop(int f, bool firstHalf) {
   int hl = HalfedgeMesh::halfedge(f, 0);
   while (m_.tail(hl) != m_.tip(hl)) hl = HalfedgeMesh::next(hl);
-  const int h1 = HalfedgeMesh::next(hl), h2 = HalfedgeMesh::next(h1);
-  const int p = m_.tail(hl), w = m_.tip(h1);
-  const double a = d_.length(h2), b = d_.length(h1), c = d_.length(hl);
-  noteAsymmetry(a, b);
   ++out_.splitLoops;
-  const auto [mid, halfId] = split(hl, p);
-  const int median = newEdge(medianLength(d_.background, a, b, c));
-  if (firstHalf) {
-    faces_.push_back({p, mid, w});
-    ids_.push_back({halfId, median, keep(h2)});
-  } else {
-    faces_.push_back({mid, p, w});
-    ids_.push_back({halfId, keep(h1), median});
-  }
+  addBisectedHalf(hl, firstHalf, m_.tail(hl));
 }
 
 GeodesicHalf DoubleHalver::build() {
