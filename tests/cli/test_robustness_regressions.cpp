@@ -22,6 +22,16 @@ namespace {
 std::string mesh(const std::string& name) {
   return std::string(CONFORMESH_TEST_DATA_DIR) + "/" + name;
 }
+
+// `conformesh -q uniformize NAME -o SCRATCH/OUT --json`, required to exit 0 (its stderr shown if not): its JSON report,
+// which must be all that stdout holds.
+nlohmann::json uniformizedReport(const std::string& name, const std::string& out) {
+  const auto r = runConformesh("-q uniformize " + mesh(name) + " -o " +
+                               (conformesh::testing::scratchDir() / out).string() + " --json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  return nlohmann::json::parse(r.out);
+}
 }  // namespace
 
 // Before the fix, the check took a Delaunay edge between two corners of one face, going around a cone vertex of
@@ -127,7 +137,8 @@ TEST_CASE("remesh lion.off (uniformized): the flow's runaway flip log is refused
   // *Sides on the diameter*; lion's 36-edge loop 0 is one), the flow "converged" to wrong targets with 5 031 580 flips
   // and the pull-back's flip cap refused it ("Ptolemy flips"); with the right targets the flow itself stops at its
   // step cap (8.2e-10 rad), before the pull-back; since the gauge is switched on when the line search crawls, the flow
-  // converges (below) and the pull-back's flip cap refuses its 5 031 570-flip log again. Refused in seconds, naming why.
+  // converges (below) and the pull-back's flip cap refuses its 5 031 570-flip log again. Refused in seconds, naming
+  // why.
   CHECK(r.err.find("Ptolemy flips") != std::string::npos);
   CHECK(seconds < 30);  // was > 120 s and 1.2 GB
 }
@@ -188,18 +199,14 @@ TEST_CASE("uniformize dragknob.off, spool.off (genus 0): converged to 1e-10 past
 // in one more Newton step; the written lengths' interior angle sums and Gauss–Bonnet hold to round-off (the command's
 // verification), and the loops are circles (the layout check, 10⁻⁸ relative, else exit 1).
 TEST_CASE("uniformize lion.off (5 boundary loops): the circle domain converges to 1e-10 instead of crawling") {
-  const fs::path out = conformesh::testing::scratchDir() / "lion_circles.ply";
-  const auto r = runConformesh("-q uniformize " + mesh("lion.off") + " -o " + out.string() + " --json");
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = uniformizedReport("lion.off", "lion_circles.ply");
   CHECK(j["target"] == "circle-domain");
   CHECK(j["boundary_loops"] == 5);
   CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
   CHECK(j["newton_steps"].get<int>() < 100);
   const int nF = j["verification"]["faces_checked"].get<int>();
   CHECK(nF == 14859);
-  const double roundOff = 16 * nF * 2.220446049250313e-16 * M_PI;  // F faces, three angles of size ≤ π each
+  const double roundOff = 16 * nF * 2.220446049250313e-16 * M_PI;   // F faces, three angles of size ≤ π each
   CHECK(j["max_interior_angle_sum_error"].get<double>() <= 1e-10);  // from the written lengths
   CHECK(std::abs(j["gauss_bonnet_residual"].get<double>()) <= roundOff);
 }
@@ -257,11 +264,8 @@ TEST_CASE("uniformize blob.off, corner_with_hole.off: the half of the double, in
 // with every edge flippable, and its half is the hyperbolic metric with geodesic boundary: by Gauss–Bonnet its area is
 // −2πχ = 220π exactly (χ = 2 − 2·3 − 106), the closed form checked here against the written lengths' total.
 TEST_CASE("uniformize elephant-with-holes.off (genus 3, 106 loops): hyperbolic with geodesic boundary via the double") {
-  const fs::path out = conformesh::testing::scratchDir() / "elephant_with_holes_hyperbolic.ply";
-  const auto r = runConformesh("-q uniformize " + mesh("elephant-with-holes.off") + " -o " + out.string() + " --json");
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const auto j = nlohmann::json::parse(r.out);  // also: nothing but the JSON on stdout (CHOLMOD's warning was)
+  const auto j = uniformizedReport("elephant-with-holes.off", "elephant_with_holes_hyperbolic.ply");  // stdout was
+  // not JSON alone while CHOLMOD printed its warning there
   CHECK(j["target"] == "hyperbolic-geodesic-boundary");
   CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
   CHECK(j["verification"]["passed"] == true);
@@ -278,6 +282,7 @@ TEST_CASE("uniformize elephant-with-holes.off (genus 3, 106 loops): hyperbolic w
   const double area = 220 * M_PI;
   CHECK(std::abs(j["total_area"].get<double>() - area) <= 1e-9 * area);
   // Routes that need the flow's correspondence are refused, naming why.
+  const fs::path out = conformesh::testing::scratchDir() / "elephant_with_holes_refused.ply";
   const auto c = runConformesh("-q uniformize " + mesh("elephant-with-holes.off") + " -o " + out.string() +
                                " --correspondence " + (conformesh::testing::scratchDir() / "eh.json").string());
   CHECK(c.status == 1);
@@ -289,11 +294,7 @@ TEST_CASE("uniformize elephant-with-holes.off (genus 3, 106 loops): hyperbolic w
 // domain's flow. The circle domain's flow failing, the annulus goes to its flat cylinder (the same conformal class by
 // z = e^{w}), whose boundary vertices target π: both ends closed geodesics of one length, circumference 2π.
 TEST_CASE("uniformize ChineseDragon-10kv.off (annulus): the flat cylinder when the circle domain's flow fails") {
-  const fs::path out = conformesh::testing::scratchDir() / "chinese_dragon_cylinder.ply";
-  const auto r = runConformesh("-q uniformize " + mesh("ChineseDragon-10kv.off") + " -o " + out.string() + " --json");
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = uniformizedReport("ChineseDragon-10kv.off", "chinese_dragon_cylinder.ply");
   CHECK(j["target"] == "flat-cylinder");
   CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
   CHECK(j["verification"]["passed"] == true);
@@ -309,12 +310,7 @@ TEST_CASE("uniformize ChineseDragon-10kv.off (annulus): the flat cylinder when t
 // now a stall (docs/ricci_flow.md §2), the restart from the double crawls too, and the half of the double's sphere is
 // the circle domain: boundary vertices inserted, the circle and the angle sums verified from the written file.
 TEST_CASE("uniformize cylinder_locally_refined.off: a crawling flow ends as a stall, the half of the double follows") {
-  const fs::path out = conformesh::testing::scratchDir() / "cylinder_locally_refined_disk.ply";
-  const auto r =
-      runConformesh("-q uniformize " + mesh("cylinder_locally_refined.off") + " -o " + out.string() + " --json");
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  const auto j = nlohmann::json::parse(r.out);
+  const auto j = uniformizedReport("cylinder_locally_refined.off", "cylinder_locally_refined_disk.ply");
   CHECK(j["target"] == "circle-domain");
   CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
   CHECK(j["verification"]["passed"] == true);
