@@ -443,6 +443,8 @@ double NewtonFlowSolver::lineSearch(const Eigen::VectorXd& delta, NewtonStepInfo
     slope0_ = r_.dot(delta);
   }
   double t = 1.0;
+  const double longest = delta.lpNorm<Eigen::Infinity>();
+  while (t * longest > options_.maxTrialStep && t > options_.minStep) t *= 0.5;  // trials that far only flip
   const double norm2Old = norm2_;
   bool startChecked = false;
   while (!tryStep(u0, delta, t, norm2Old, info)) {

@@ -38,6 +38,7 @@ std::string RicciFlowOptions::validate() const {
   if (nestedDissectionMin < 0) return ricciFlowExpected("nestedDissectionMin", ">= 0", nestedDissectionMin);
   if (!(armijo > 0 && armijo < 0.5)) return ricciFlowExpected("armijo", "0 < armijo < 0.5", armijo);
   if (!(minStep > 0 && minStep <= 1)) return ricciFlowExpected("minStep", "0 < minStep <= 1", minStep);
+  if (!(maxTrialStep > 0)) return ricciFlowExpected("maxTrialStep", "> 0", maxTrialStep);
   if (!(delaunayTolerance >= 0) || !std::isfinite(delaunayTolerance))
     return ricciFlowExpected("delaunayTolerance", "a finite value >= 0", delaunayTolerance);
   return "";

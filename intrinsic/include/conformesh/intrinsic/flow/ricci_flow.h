@@ -79,6 +79,10 @@ struct RicciFlowOptions {
   // up (0 < minStep ≤ 1).
   double armijo = 1e-4;
   double minStep = 1e-12;
+  // The line search's first trial is the largest t = 2^-k with t · max|δ| ≤ maxTrialStep (> 0; radians of u): a trial
+  // that moves some u by more than this rescales a length by up to e^16 and is rejected after Ptolemy flips that the
+  // flip log keeps (lion.off: 5·10⁶ flips in one step's rejected trials; docs/ricci_flow.md §2).
+  double maxTrialStep = 16;
   // Delaunay tolerance of the Penner flips (see pennerDelaunayMargin): 1e-12 leaves cocircular quads alone.
   double delaunayTolerance = 1e-12;
   // Return a solution that contains faces with extended angles (π, 0, 0) instead of throwing; the genus-0
