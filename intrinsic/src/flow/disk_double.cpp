@@ -79,12 +79,12 @@ double halfTriangleQuality(const Eigen::Vector2d& a, const Eigen::Vector2d& b, c
   return area2 / (ab.squaredNorm() + ac.squaredNorm() + (c - b).squaredNorm());
 }
 
-// Locates each new vertex on the disk's input: the double's correspondence maps the crossing point of T0* to a point
-// of the double's input, which the mirror symmetry puts on the fixed set, i.e. on an input boundary edge; a mirror
-// face (c', b', a') of (a, b, c) has its coordinates reversed.
-void locateOnInputBoundary(const IntrinsicTriangulation& disk, const DiskDouble& twin, const Uniformization& sphere,
-                           const std::vector<FacePoint>& crossings, std::vector<HalfBoundaryVertex>& inserted) {
-  const std::vector<FacePoint> onInput = sphere.correspondence.mapToInput(sphere.uniform.mesh, crossings);
+}  // namespace
+
+void locateOnInputBoundary(const IntrinsicTriangulation& disk, const DiskDouble& twin, const HalfedgeMesh& doubled,
+                           const FlowCorrespondence& log, const std::vector<FacePoint>& crossings,
+                           std::vector<HalfBoundaryVertex>& inserted) {
+  const std::vector<FacePoint> onInput = log.mapToInput(doubled, crossings);
   for (std::size_t i = 0; i < onInput.size(); ++i) {
     int f = onInput[i].face;
     std::array<double, 3> b = onInput[i].bary;
@@ -110,8 +110,6 @@ void locateOnInputBoundary(const IntrinsicTriangulation& disk, const DiskDouble&
     }
   }
 }
-
-}  // namespace
 
 DiskHalf halveDoubleSphere(const IntrinsicTriangulation& disk, const DiskDouble& twin, const Uniformization& sphere) {
   const HalfedgeMesh& m = sphere.uniform.mesh;
@@ -214,7 +212,7 @@ DiskHalf halveDoubleSphere(const IntrinsicTriangulation& disk, const DiskDouble&
   out.lambda.resize(x.size());
   for (int v = 0; v < n; ++v)
     out.lambda[v] = sphere.lambda[v] - std::log(2.0) + 2 * std::log((sphere.positions[v] + normal).norm());
-  locateOnInputBoundary(disk, twin, sphere, crossings, out.inserted);
+  locateOnInputBoundary(disk, twin, sphere.uniform.mesh, sphere.correspondence, crossings, out.inserted);
   for (const HalfBoundaryVertex& q : out.inserted) {
     const int h = disk.mesh.edgeHalfedge(q.inputEdge);
     out.lambda[q.vertex] =

@@ -37,6 +37,16 @@ struct HalfBoundaryVertex {
   bool selfMirror = false;  // the crossing edge joins a vertex to its own mirror image (crossing at its midpoint)
 };
 
+// Where the new boundary vertices of a half lie on the input (the disk's half below and geodesic_half.h): each of
+// `crossings`, a point of `doubled` (the flow's final triangulation of twin.surface; `log` its flip log), maps to a
+// point of the double's T0 that the mirror symmetry puts on the fixed set, an input boundary edge (a mirror face
+// (c′, b′, a′) of (a, b, c) has its coordinates reversed). Writes inputEdge, parameter and offEdge of inserted[i];
+// throws ConvergenceError naming inserted[i].vertex when its point is farther than 1e-8 (barycentric) from an input
+// boundary edge.
+void locateOnInputBoundary(const IntrinsicTriangulation& disk, const DiskDouble& twin, const HalfedgeMesh& doubled,
+                           const FlowCorrespondence& log, const std::vector<FacePoint>& crossings,
+                           std::vector<HalfBoundaryVertex>& inserted);
+
 // The disk's half of the double's sphere, stereographically projected from the mirror pole onto the unit disk: a
 // straight-line triangulation of the unit disk whose boundary loop holds the disk's boundary vertices plus one new
 // vertex per crossing edge (docs/ricci_flow.md §3.3, "The half").

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "conformesh/intrinsic/errors.h"
-#include "conformesh/intrinsic/mesh/curvature.h"
 
 namespace conformesh::intrinsic::detail {
 namespace {
@@ -316,55 +315,6 @@ GeodesicHalf halveSymmetricDouble(const IntrinsicTriangulation& doubled, const s
     if (side[f] == kSplitLoop) halver.addSplitLoop(f, firstHalf[f]);
   }
   return halver.build();
-}
-
-std::vector<BoundaryPoint> locateOnInputBoundary(const IntrinsicTriangulation& input, const std::vector<int>& mirror,
-                                                 const HalfedgeMesh& doubleInput, const IntrinsicTriangulation& doubled,
-                                                 const FlowCorrespondence& log, const GeodesicHalf& half) {
-  // The map's round-off: the replay moves points through the flipped quads in double precision (docs/ricci_flow.md
-  // §5); 10⁻⁶ is far above it and far below any distance from an edge that a symmetric map could produce (zero).
-  constexpr double kOnEdge = 1e-6;
-  const HalfedgeMesh& in = input.mesh;
-  std::map<std::pair<int, int>, int> boundaryEdge;
-  for (int e = 0; e < in.nEdges(); ++e)
-    if (in.isBoundaryEdge(e)) {
-      const int h = in.edgeHalfedge(e);
-      boundaryEdge.emplace(std::minmax(in.tail(h), in.tip(h)), e);
-    }
-  std::vector<FacePoint> midpoints;
-  for (int h : half.splitHalfedge) {
-    FacePoint p;
-    p.face = HalfedgeMesh::face(h);
-    p.bary = {0, 0, 0};
-    p.bary[h % 3] = p.bary[HalfedgeMesh::next(h) % 3] = 0.5;
-    midpoints.push_back(p);
-  }
-  const std::vector<FacePoint> images = log.mapToInput(doubled.mesh, midpoints);
-  std::vector<BoundaryPoint> out;
-  for (std::size_t i = 0; i < images.size(); ++i) {
-    const FacePoint& q = images[i];
-    const int k = static_cast<int>(std::min_element(q.bary.begin(), q.bary.end()) - q.bary.begin());
-    const int a = doubleInput.faceVertex(q.face, (k + 1) % 3), b = doubleInput.faceVertex(q.face, (k + 2) % 3);
-    const auto found = boundaryEdge.find(std::minmax(a, b));
-    if (q.bary[k] > kOnEdge || mirror[a] != a || mirror[b] != b || found == boundaryEdge.end())
-      throw ConvergenceError("geodesic boundary from the double: inserted boundary vertex " +
-                             std::to_string(input.mesh.nVertices() + static_cast<int>(i)) +
-                             " (halving the edge of vertex " + std::to_string(half.splitFrom[i]) +
-                             " to its mirror image) does not map to the input's boundary");
-    const int tail = in.tail(in.edgeHalfedge(found->second));
-    const double atA = q.bary[(k + 1) % 3], atB = q.bary[(k + 2) % 3];
-    out.push_back({found->second, (tail == a ? atB : atA) / (atA + atB)});
-  }
-  return out;
-}
-
-double maxGeodesicBoundaryResidual(const IntrinsicTriangulation& tri) {
-  const std::vector<double> sums = angleSums(tri);
-  double worst = 0;
-  for (int v = 0; v < tri.mesh.nVertices(); ++v) {
-    worst = std::max(worst, std::abs(sums[v] - (tri.mesh.isBoundaryVertex(v) ? M_PI : 2 * M_PI)));
-  }
-  return worst;
 }
 
 }  // namespace conformesh::intrinsic::detail

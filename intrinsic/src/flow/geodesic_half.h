@@ -31,21 +31,5 @@ struct GeodesicHalf {
 GeodesicHalf halveSymmetricDouble(const IntrinsicTriangulation& doubled, const std::vector<int>& mirror, int nInput,
                                   const FlowCorrespondence& log, const HalfedgeMesh& doubleInput, int inputFaces);
 
-// Where on the input's boundary each inserted vertex of `half` lies: the midpoint of its split edge mapped through the
-// double's flip log `log` (from `doubled`, the flow's final triangulation, to the double's T0, whose vertices are the
-// input's and their mirror copies: `mirror` as above) lands on a boundary edge of `input` — the mirror's fixed set —
-// at `parameter` ∈ [0, 1] from tail(edgeHalfedge(inputEdge)). Throws ConvergenceError naming the inserted vertex when
-// its image is farther than 10⁻⁶ (barycentric) from every boundary edge: the map is not mirror-symmetric there.
-struct BoundaryPoint {
-  int inputEdge = -1;
-  double parameter = 0;
-};
-std::vector<BoundaryPoint> locateOnInputBoundary(const IntrinsicTriangulation& input, const std::vector<int>& mirror,
-                                                 const HalfedgeMesh& doubleInput, const IntrinsicTriangulation& doubled,
-                                                 const FlowCorrespondence& log, const GeodesicHalf& half);
-
-// The worst angle-sum error of a surface with geodesic boundary: |Θ − 2π| inside, |Θ − π| on the boundary (radians,
-// in its own background geometry).
-double maxGeodesicBoundaryResidual(const IntrinsicTriangulation& tri);
 
 }  // namespace conformesh::intrinsic::detail

@@ -44,12 +44,7 @@ RicciFlowReport NewtonFlowSolver::run() {
   start();
   while (maxAbs_ > report_.effectiveTolerance) {
     checkStepCap();
-    if (gaugeLoop_ >= 0 && !gaugeOn_ && maxAbs_ < gaugeSwitch_) {
-      activateGaugeRows();
-      for (int k = 0; k < 2; ++k) gaugeTarget_[k] = gaugeAngle(k);
-      evaluateResidual(maxAbs_, norm2_);
-      patternValid_ = false;
-    }
+    if (gaugeLoop_ >= 0 && !gaugeOn_ && maxAbs_ < gaugeSwitch_) switchOnGauge();
     const Eigen::VectorXd delta = circles_ ? circleDomainNewtonStep() : symmetricNewtonStep();
     NewtonStepInfo info;
     info.step = report_.newtonSteps + 1;
@@ -274,6 +269,14 @@ void NewtonFlowSolver::activateGaugeRows() {
   row1_ = gaugeRow_[1];
 }
 
+// The gauge rows on at the current u, their targets the current arcs (docs/ricci_flow.md §3.3, "Möbius gauge").
+void NewtonFlowSolver::switchOnGauge() {
+  activateGaugeRows();
+  for (int k = 0; k < 2; ++k) gaugeTarget_[k] = gaugeAngle(k);
+  evaluateResidual(maxAbs_, norm2_);
+  patternValid_ = false;
+}
+
 // === first evaluation and solver set-up
 
 void NewtonFlowSolver::start() {
@@ -453,7 +456,7 @@ double NewtonFlowSolver::lineSearch(const Eigen::VectorXd& delta, NewtonStepInfo
       startChecked = true;  // once per step
       if (stopAtDegenerateStart(u0)) break;
     }
-    if (gaugeLoop_ >= 0 && !gaugeOn_ && (t < options_.minStep || crawlsAlongMoebiusKernel(t))) {
+    if (t < options_.minStep && gaugeLoop_ >= 0 && !gaugeOn_) {
       switchOnGaugeAtStall(u0);
       break;
     }
@@ -548,15 +551,6 @@ bool NewtonFlowSolver::stopAtDegenerateStart(const std::vector<double>& u0) {
   return true;
 }
 
-// With holes the gauge is also switched on when the line search crawls close to the solution: there Newton is in its
-// quadratic region and takes the full step unless the direction runs along the Möbius kernel (§3.3); a step halved 7
-// times below max |r| = 10⁻⁶ is that, not curvature of the residual (lion.off: 85 accepted steps of t ≈ 2⁻¹² from
-// 8.5·10⁻¹⁰ to 8.25·10⁻¹⁰, the step cap reached without a stall).
-bool NewtonFlowSolver::crawlsAlongMoebiusKernel(double t) const {
-  constexpr double kCrawlStep = 1.0 / 128, kCrawlBelow = 1e-6;
-  return t < kCrawlStep && maxAbs_ < kCrawlBelow;
-}
-
 // With holes the gauge is only a fallback: switched on at the step's start when no step decreases the merit.
 void NewtonFlowSolver::switchOnGaugeAtStall(const std::vector<double>& u0) {
   restoreStart(u0);
@@ -634,9 +628,19 @@ void NewtonFlowSolver::throwStalled(const std::vector<double>& u0, const NewtonS
 // together reduce max |r| by less than 1 % end it: first by switching on a circle domain's Möbius gauge if it is off
 // (the kernel is one cause of crawling), then as a stall, so that the caller's fallbacks (the double) start at once.
 // Newton in its quadratic region takes t = 1; a run of tiny steps that makes progress is left alone.
+//
+// Close to the solution (max |r| < 10⁻⁶) a circle domain's gauge goes on at the first step halved below 2⁻⁷: Newton is
+// in its quadratic region there and takes t = 1 unless the direction runs along the Möbius kernel (lion.off, 5 loops:
+// 85 steps of t ≈ 2⁻¹² from 8.5·10⁻¹⁰ to the step cap at 8.25·10⁻¹⁰; with the gauge on, converged in one more step).
 void NewtonFlowSolver::checkCrawl(double t, double before) {
-  constexpr double kCrawlStep = 1.0 / 256, kProgress = 0.99;
+  constexpr double kCrawlStep = 1.0 / 256, kProgress = 0.99, kNearStep = 1.0 / 128, kNear = 1e-6;
   constexpr int kCrawlRun = 8;
+  const bool gaugeAvailable = gaugeLoop_ >= 0 && !gaugeOn_;
+  if (gaugeAvailable && t < kNearStep && maxAbs_ < kNear) {
+    crawlSteps_ = 0;
+    switchOnGauge();
+    return;
+  }
   if (!(t < kCrawlStep)) {
     crawlSteps_ = 0;
     return;
@@ -648,11 +652,8 @@ void NewtonFlowSolver::checkCrawl(double t, double before) {
     return;
   }
   crawlSteps_ = 0;
-  if (gaugeLoop_ >= 0 && !gaugeOn_) {
-    activateGaugeRows();
-    for (int k = 0; k < 2; ++k) gaugeTarget_[k] = gaugeAngle(k);
-    evaluateResidual(maxAbs_, norm2_);
-    patternValid_ = false;
+  if (gaugeAvailable) {
+    switchOnGauge();
     return;
   }
   std::ostringstream msg;
@@ -662,7 +663,6 @@ void NewtonFlowSolver::checkCrawl(double t, double before) {
       << " rad, tolerance " << report_.effectiveTolerance << "; " << worstVertex();
   throw ConvergenceError(msg.str());
 }
-
 
 void NewtonFlowSolver::checkStepCap() const {
   if (report_.newtonSteps < options_.maxNewtonSteps) return;

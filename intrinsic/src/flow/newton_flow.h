@@ -70,8 +70,8 @@ class NewtonFlowSolver {
   std::string worstVertex() const;  // "vertex v (Θ̂ − Θ = …)" at the last evaluated point
   void restoreStart(const std::vector<double>& u0);
   bool stopAtDegenerateStart(const std::vector<double>& u0);
-  bool crawlsAlongMoebiusKernel(double t) const;
   void checkCrawl(double t, double before);
+  void switchOnGauge();
   void switchOnGaugeAtStall(const std::vector<double>& u0);
   bool polishInExtendedPrecision(const std::vector<double>& u0);  // true: converged in extended precision
   [[noreturn]] void throwStalled(const std::vector<double>& u0, const NewtonStepInfo& info);

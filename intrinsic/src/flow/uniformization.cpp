@@ -74,6 +74,19 @@ double maxInteriorAngleSumError(const IntrinsicTriangulation& tri) {
   return worst;
 }
 
+double maxGeodesicBoundaryResidual(const IntrinsicTriangulation& tri, int* worstVertex) {
+  const std::vector<double> sums = angleSums(tri);
+  double worst = 0;
+  for (int v = 0; v < tri.mesh.nVertices(); ++v) {
+    const double e = std::abs(sums[v] - (tri.mesh.isBoundaryVertex(v) ? M_PI : 2 * M_PI));
+    if (!(e <= worst)) {
+      worst = e;
+      if (worstVertex) *worstVertex = v;
+    }
+  }
+  return worst;
+}
+
 namespace {
 
 using detail::accumulate;
@@ -185,6 +198,13 @@ BoundaryLoops boundaryLoopsOf(const IntrinsicTriangulation& input) {
   return loops;
 }
 
+// `options` with each progress line prefixed (the double's solves report as "double: …").
+UniformizationOptions prefixedProgress(const UniformizationOptions& options, const std::string& prefix) {
+  UniformizationOptions out = options;
+  if (options.progress) out.progress = [&options, prefix](const std::string& line) { options.progress(prefix + line); };
+  return out;
+}
+
 // The double's sphere (disk_double.h), kept for the half below when the restart fails too.
 struct DoubleSphere {
   detail::DiskDouble twin;
@@ -193,8 +213,7 @@ struct DoubleSphere {
 
 DoubleSphere solveDouble(const IntrinsicTriangulation& input, const UniformizationOptions& options) {
   DoubleSphere out{detail::doubleDisk(input), {}};
-  UniformizationOptions quiet = options;
-  if (options.progress) quiet.progress = [&options](const std::string& line) { options.progress("double: " + line); };
+  const UniformizationOptions quiet = prefixedProgress(options, "double: ");
   UniformizationReport sphereReport;
   out.sphere = detail::uniformizeSphere(out.twin.surface, quiet, sphereReport);
   return out;
@@ -480,8 +499,7 @@ void addSolveCounts(UniformizationReport& report, const UniformizationReport& so
 Uniformization geodesicBoundaryFromDouble(const IntrinsicTriangulation& input, const UniformizationOptions& options,
                                           UniformizationReport report, Background geometry) {
   const detail::DiskDouble twin = detail::doubleDisk(input);
-  UniformizationOptions quiet = options;
-  if (options.progress) quiet.progress = [&options](const std::string& line) { options.progress("double: " + line); };
+  const UniformizationOptions quiet = prefixedProgress(options, "double: ");
   UniformizationReport closedReport;
   closedReport.target =
       geometry == Background::Hyperbolic ? UniformizationTarget::Hyperbolic : UniformizationTarget::FlatTorus;
@@ -490,14 +508,23 @@ Uniformization geodesicBoundaryFromDouble(const IntrinsicTriangulation& input, c
   detail::GeodesicHalf half =
       detail::halveSymmetricDouble(closed.uniform, twin.mirror, n, closed.correspondence, twin.surface.mesh,
                                    twin.diskFaces);
-  const std::vector<detail::BoundaryPoint> where =
-      detail::locateOnInputBoundary(input, twin.mirror, twin.surface.mesh, closed.uniform, closed.correspondence, half);
+  // The inserted vertices are the split edges' midpoints.
+  std::vector<FacePoint> midpoints;
+  std::vector<detail::HalfBoundaryVertex> where(half.splitFrom.size());
+  for (std::size_t i = 0; i < half.splitHalfedge.size(); ++i) {
+    const int h = half.splitHalfedge[i];
+    FacePoint p{HalfedgeMesh::face(h), {0, 0, 0}};
+    p.bary[h % 3] = p.bary[HalfedgeMesh::next(h) % 3] = 0.5;
+    midpoints.push_back(p);
+    where[i].vertex = n + static_cast<int>(i);
+  }
+  detail::locateOnInputBoundary(input, twin, closed.uniform.mesh, closed.correspondence, midpoints, where);
   Uniformization out;
   out.uniform = std::move(half.half);
   out.lambda.assign(closed.lambda.begin(), closed.lambda.begin() + n);
   for (std::size_t i = 0; i < half.splitFrom.size(); ++i) {
     out.lambda.push_back(closed.lambda[half.splitFrom[i]]);
-    out.insertedVertices.push_back({n + static_cast<int>(i), where[i].inputEdge, where[i].parameter});
+    out.insertedVertices.push_back({where[i].vertex, where[i].inputEdge, where[i].parameter});
   }
   if (report.target == UniformizationTarget::FlatCylinder) {
     const double shift = cylinderLogScale(out.uniform);
@@ -507,7 +534,7 @@ Uniformization geodesicBoundaryFromDouble(const IntrinsicTriangulation& input, c
   }
   out.correspondence = FlowCorrespondence(0);
   addSolveCounts(report, closed.report);
-  report.maxResidual = detail::maxGeodesicBoundaryResidual(out.uniform);
+  report.maxResidual = maxGeodesicBoundaryResidual(out.uniform);
   if (!(report.maxResidual <= std::max(options.flow.tolerance, report.effectiveTolerance))) {
     std::ostringstream message;
     message.precision(3);

@@ -111,14 +111,8 @@ namespace {
 // A half of the double with geodesic boundary (hyperbolic, flat cylinder; docs/ricci_flow.md §3.4): the angle sums
 // recomputed from the written lengths, 2π inside and π on the boundary, within the flow's tolerance.
 void checkGeodesicBoundary(const Uniformization& u, OutputVerification& v) {
-  const HalfedgeMesh& m = u.uniform.mesh;
-  const std::vector<double> sums = angleSums(u.uniform);
-  double worst = 0;
   int at = -1;
-  for (int w = 0; w < m.nVertices(); ++w) {
-    const double e = std::abs(sums[w] - (m.isBoundaryVertex(w) ? M_PI : 2 * M_PI));
-    if (!(e <= worst)) worst = e, at = w;
-  }
+  const double worst = maxGeodesicBoundaryResidual(u.uniform, &at);
   if (worst <= u.report.effectiveTolerance) return;
   std::ostringstream s;
   s.precision(3);

@@ -133,4 +133,8 @@ ComponentUniformization uniformizeComponents(const IntrinsicTriangulation& input
 // check a reader of T0* can redo from the written lengths (0 for a surface with no interior vertex).
 double maxInteriorAngleSumError(const IntrinsicTriangulation& tri);
 
+// The worst angle-sum error of a surface with geodesic boundary (hyperbolic, flat cylinder): |Θ − 2π| inside, |Θ − π|
+// on the boundary (radians, in its own background geometry); the vertex where it is in `worstVertex` if given.
+double maxGeodesicBoundaryResidual(const IntrinsicTriangulation& tri, int* worstVertex = nullptr);
+
 }  // namespace conformesh::intrinsic
