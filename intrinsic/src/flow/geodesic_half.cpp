@@ -14,30 +14,52 @@ namespace {
 
 enum Side : signed char { kUnknown = 0, kInput = 1, kMirror = 2, kSplit = 3, kTrapezoid = 4, kSplitLoop = 5 };
 
+// cosh x − 1 and 1 − cos x without the cancellation near x = 0 (2 sinh²(x/2), 2 sin²(x/2)): the double's hyperbolic
+// lengths go down to 10⁻⁸ (b9_mesh.off), where cosh x rounds to 1 and acosh of a rounded argument loses every digit.
+double coshMinusOne(double x) {
+  const double s = std::sinh(0.5 * x);
+  return 2 * s * s;
+}
+double oneMinusCos(double x) {
+  const double s = std::sin(0.5 * x);
+  return 2 * s * s;
+}
+
 // The median from w of a triangle (v, v', w) with |wv| = a, |wv'| = b, |vv'| = c, to the midpoint of vv' (Stewart's
-// theorem and its constant-curvature analogues, from the law of cosines at the midpoint on both sides).
+// theorem and its constant-curvature analogues, from the law of cosines at the midpoint on both sides:
+// cosh m = (cosh a + cosh b)/(2 cosh(c/2)), cos m = (cos a + cos b)/(2 cos(c/2))), in the forms above that keep the
+// relative accuracy of the Euclidean formula at small lengths: cosh m − 1 = (H(a) + H(b) − 2H(c/2))/(2 cosh(c/2)).
 double medianLength(Background bg, double a, double b, double c) {
   switch (bg) {
     case Background::Euclidean:
       return std::sqrt(std::max(0.0, 0.5 * (a * a + b * b) - 0.25 * c * c));
-    case Background::Hyperbolic:
-      return std::acosh(std::max(1.0, (std::cosh(a) + std::cosh(b)) / (2 * std::cosh(0.5 * c))));
-    case Background::Spherical:
-      return std::acos(std::clamp((std::cos(a) + std::cos(b)) / (2 * std::cos(0.5 * c)), -1.0, 1.0));
+    case Background::Hyperbolic: {
+      const double h = (coshMinusOne(a) + coshMinusOne(b) - 2 * coshMinusOne(0.5 * c)) / (2 * std::cosh(0.5 * c));
+      return 2 * std::asinh(std::sqrt(std::max(0.0, 0.5 * h)));
+    }
+    case Background::Spherical: {
+      const double s = (oneMinusCos(a) + oneMinusCos(b) - 2 * oneMinusCos(0.5 * c)) / (2 * std::cos(0.5 * c));
+      return 2 * std::asin(std::clamp(std::sqrt(std::max(0.0, 0.5 * s)), 0.0, 1.0));
+    }
   }
   return 0;
 }
 
 // The other leg of a right triangle with hypotenuse c and leg a (Pythagoras; cosh c = cosh a cosh b; cos c = cos a cos
-// b).
+// b), as cosh b − 1 = 2 sinh((c − a)/2) sinh((c + a)/2) / cosh a (and its spherical analogue): no cancellation when
+// the legs are small or b ≪ a.
 double rightTriangleLeg(Background bg, double c, double a) {
   switch (bg) {
     case Background::Euclidean:
       return std::sqrt(std::max(0.0, (c - a) * (c + a)));
-    case Background::Hyperbolic:
-      return std::acosh(std::max(1.0, std::cosh(c) / std::cosh(a)));
-    case Background::Spherical:
-      return std::acos(std::clamp(std::cos(c) / std::cos(a), -1.0, 1.0));
+    case Background::Hyperbolic: {
+      const double h = 2 * std::sinh(0.5 * (c - a)) * std::sinh(0.5 * (c + a)) / std::cosh(a);
+      return 2 * std::asinh(std::sqrt(std::max(0.0, 0.5 * h)));
+    }
+    case Background::Spherical: {
+      const double s = 2 * std::sin(0.5 * (c - a)) * std::sin(0.5 * (c + a)) / std::cos(a);
+      return 2 * std::asin(std::clamp(std::sqrt(std::max(0.0, 0.5 * s)), 0.0, 1.0));
+    }
   }
   return 0;
 }
@@ -49,10 +71,29 @@ ConvergenceError notSymmetric(int f, const std::string& what) {
       std::to_string(f) + " (" + what + ")");
 }
 
+// Per face: its side, and for a face of a trapezoid its diagonal (the halfedge shared with the quad's other face).
+struct FaceSides {
+  std::vector<signed char> side;
+  std::vector<int> diagonal;    // kTrapezoid faces only
+  std::vector<char> firstHalf;  // kSplitLoop faces only: which half of the bisected face is the input's
+};
+
+// The diagonal of a face of a trapezoid (a, b, b', a') of interior vertices: its edge between the two sides that does
+// not join a vertex to its mirror image; −1 when there is none.
+int trapezoidDiagonal(const HalfedgeMesh& m, const std::vector<int>& mirror, int nInput, int f) {
+  for (int k = 0; k < 3; ++k) {
+    const int h = HalfedgeMesh::halfedge(f, k), p = m.tail(h), q = m.tip(h);
+    if (mirror[p] == p || mirror[q] == q || mirror[p] == q) continue;
+    if ((p < nInput) != (q < nInput)) return h;
+  }
+  return -1;
+}
+
 // Per face: kInput / kMirror when it has a vertex of that side only, kSplit for (v, v', w), kTrapezoid for half of a
 // quad (a, b, b', a'), kUnknown when all three vertices are on the boundary (sidesFromCentroids decides).
-std::vector<signed char> classifyFaces(const HalfedgeMesh& m, const std::vector<int>& mirror, int nInput) {
-  std::vector<signed char> side(m.nFaces(), kUnknown);
+FaceSides classifyFaces(const HalfedgeMesh& m, const std::vector<int>& mirror, int nInput) {
+  FaceSides sides{std::vector<signed char>(m.nFaces(), kUnknown), std::vector<int>(m.nFaces(), -1),
+                  std::vector<char>(m.nFaces(), 0)};
   for (int f = 0; f < m.nFaces(); ++f) {
     int input = 0, copy = 0;
     for (int k = 0; k < 3; ++k) {
@@ -60,22 +101,25 @@ std::vector<signed char> classifyFaces(const HalfedgeMesh& m, const std::vector<
       input += v < nInput && mirror[v] != v;
       copy += v >= nInput;
     }
+    signed char& side = sides.side[f];
     if (input + copy == 3 && input > 0 && copy > 0) {
-      side[f] = kTrapezoid;  // half of a quad (a, b, b', a'): checked when it is split
+      side = kTrapezoid;  // half of a quad (a, b, b', a'): checked when it is split
+      sides.diagonal[f] = trapezoidDiagonal(m, mirror, nInput, f);
+      if (sides.diagonal[f] < 0) throw notSymmetric(f, "a face of both sides without a diagonal of a trapezoid");
     } else if (input > 0 && copy > 0) {
       for (int k = 0; k < 3; ++k) {
         const int v = m.faceVertex(f, k), w = m.faceVertex(f, (k + 2) % 3);
         if (v < nInput && mirror[v] != v && m.faceVertex(f, (k + 1) % 3) != mirror[v] && w != mirror[v])
           throw notSymmetric(f, "an interior vertex beside a copy that is not its mirror image");
       }
-      side[f] = kSplit;
+      side = kSplit;
     } else if (input > 0) {
-      side[f] = kInput;
+      side = kInput;
     } else if (copy > 0) {
-      side[f] = kMirror;
+      side = kMirror;
     }
   }
-  return side;
+  return sides;
 }
 
 // The faces that lie on one side (no vertex of the other side) take the side of their centroid's image under the
@@ -88,7 +132,7 @@ void sidesFromCentroids(const HalfedgeMesh& m, const FlowCorrespondence& log, in
   std::vector<FacePoint> centroids;
   std::vector<int> which;
   for (int f = 0; f < m.nFaces(); ++f)
-    if (side[f] != kSplit && side[f] != kTrapezoid) {
+    if (side[f] == kInput || side[f] == kMirror || side[f] == kUnknown) {
       centroids.push_back(FacePoint{f, {1.0 / 3, 1.0 / 3, 1.0 / 3}});
       which.push_back(f);
     }
@@ -101,41 +145,66 @@ void sidesFromCentroids(const HalfedgeMesh& m, const FlowCorrespondence& log, in
   }
 }
 
-// A face (p, p, w) with a loop at a boundary vertex p is bisected by the mirror, from w to the loop's midpoint, when
-// that midpoint maps onto the mirror of the double's T0 (an edge of T0 between a face of the input and one of the
-// copy): the loop then goes around a short hole's neck (elephant-with-holes.off). The half kept, (p, mid, w) or
-// (mid, p, w), is the one whose centroid maps to the input's side (`firstHalf`). Vertex patterns cannot see either: all
-// three vertices are on the boundary, and the faces across its other two edges may both be one self-symmetric face.
+// The loop face f of self-symmetric loop hl = p → p with apex w off the mirror and the face across its edge to w that
+// holds w' (findSymmetricLoopFaces): both kTrapezoid, their shared edge the diagonal. Throws when neither face across
+// f's other edges holds w' (no trapezoid: the triangulation is not symmetric there).
+void markLoopTrapezoid(const HalfedgeMesh& m, const std::vector<int>& mirror, int hl, FaceSides& sides) {
+  const int f = HalfedgeMesh::face(hl), w = m.tip(HalfedgeMesh::next(hl));
+  for (const int h : {HalfedgeMesh::next(hl), HalfedgeMesh::prev(hl)}) {
+    const int g = HalfedgeMesh::face(m.twin(h));
+    bool holdsMirror = false;
+    for (int k = 0; k < 3; ++k) holdsMirror = holdsMirror || m.faceVertex(g, k) == mirror[w];
+    if (!holdsMirror || g == f) continue;
+    sides.side[f] = sides.side[g] = kTrapezoid;
+    sides.diagonal[f] = h;
+    sides.diagonal[g] = m.twin(h);
+    return;
+  }
+  throw notSymmetric(f, "a loop around the mirror whose face has an apex off the mirror and no trapezoid");
+}
+
+// A loop hl = p → p at a boundary vertex is self-symmetric — it goes once around a short hole's neck and the mirror
+// crosses it at its midpoint — when that midpoint maps onto the mirror of the double's T0 (an edge of T0 between a
+// face of the input and one of the copy; elephant-with-holes.off). Vertex patterns cannot see it: both ends are on
+// the boundary. The reflection keeps each side of such a loop, so the face (p, p, w) on a side is either
+// self-symmetric — w on the boundary, the face bisected from w to the loop's midpoint (kSplitLoop; the half kept,
+// (p, mid, w) or (mid, p, w), the one whose centroid maps to the input's side, `firstHalf`) — or, w off the mirror,
+// one face of a trapezoid (w, p, p, w') whose parallel sides are the loop and the crossing edge w–w' and whose
+// diagonal, chosen by the flips at a tie, is the edge that f shares with the face holding w' (b9_mesh.off).
 void findSymmetricLoopFaces(const IntrinsicTriangulation& doubled, const std::vector<int>& mirror,
                             const FlowCorrespondence& log, const HalfedgeMesh& doubleInput, int inputFaces,
-                            std::vector<signed char>& side, std::vector<char>& firstHalf) {
+                            FaceSides& sides) {
   constexpr double kOnEdge = 1e-6;  // barycentric: far above the replay's round-off, far below a generic distance
   const HalfedgeMesh& m = doubled.mesh;
-  std::vector<int> faces;
+  std::vector<int> loops;
   std::vector<FacePoint> probes;  // per candidate: the loop's midpoint, the centroid of its first half
   for (int f = 0; f < m.nFaces(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int hl = HalfedgeMesh::halfedge(f, k), p = m.tail(hl);
-      const int w = m.tip(HalfedgeMesh::next(hl));
-      if (m.tip(hl) != p || mirror[p] != p || mirror[w] != w) continue;
+      if (m.tip(hl) != p || mirror[p] != p) continue;
       FacePoint mid{f, {0, 0, 0}}, first{f, {0, 0, 0}};
       mid.bary[k] = mid.bary[(k + 1) % 3] = 0.5;
       first.bary[k] = 0.5;  // (p_c0, mid, w): the corners' thirds, mid = half c0 + half c1
       first.bary[(k + 1) % 3] = 1.0 / 6;
       first.bary[(k + 2) % 3] = 1.0 / 3;
-      faces.push_back(f);
+      loops.push_back(hl);
       probes.push_back(mid);
       probes.push_back(first);
     }
-  if (faces.empty()) return;
+  if (loops.empty()) return;
   const std::vector<FacePoint> images = log.mapToInput(m, probes);
-  for (std::size_t i = 0; i < faces.size(); ++i) {
+  for (std::size_t i = 0; i < loops.size(); ++i) {
     const FacePoint& q = images[2 * i];
     const int k = static_cast<int>(std::min_element(q.bary.begin(), q.bary.end()) - q.bary.begin());
     const int across = HalfedgeMesh::face(doubleInput.twin(HalfedgeMesh::halfedge(q.face, (k + 1) % 3)));
     if (q.bary[k] > kOnEdge || (q.face < inputFaces) == (across < inputFaces)) continue;
-    side[faces[i]] = kSplitLoop;
-    firstHalf[faces[i]] = images[2 * i + 1].face < inputFaces;
+    const int hl = loops[i], f = HalfedgeMesh::face(hl), w = m.tip(HalfedgeMesh::next(hl));
+    if (mirror[w] == w) {
+      sides.side[f] = kSplitLoop;
+      sides.firstHalf[f] = images[2 * i + 1].face < inputFaces;
+      continue;
+    }
+    markLoopTrapezoid(m, mirror, hl, sides);
   }
 }
 
@@ -153,7 +222,7 @@ class DoubleHalver {
   }
   void addSplitFace(int f);
   void addBisectedHalf(int hc, bool keepTail, int owner);
-  void addTrapezoid(int f);
+  void addTrapezoid(int f, int hd);
   void addSplitLoop(int f, bool firstHalf);
   GeodesicHalf build();
 
@@ -227,18 +296,12 @@ void DoubleHalver::addSplitFace(int f) {
 }
 
 // Two crossing edges a–a', b–b' that bound one quad (a, b, b', a') — an isosceles trapezoid, always cocircular, so
-// the Delaunay flips pick one of its diagonals a–b' or b–a', neither mirror-symmetric. Its input half is the quad
-// (a, b, m_b, m_a) with right angles at the midpoints, triangulated (a, b, m_b), (a, m_b, m_a): |a m_b| is the median
-// from a in the triangle (a, b, b') (whose side a–b' is the diagonal when that was chosen, else found from the
-// other triangle by symmetry), |m_a m_b| the other leg of the right triangle (a, m_a, m_b).
-void DoubleHalver::addTrapezoid(int f) {
-  // The diagonal: the edge of f between the two sides that does not join a vertex to its mirror image.
-  int hd = -1;
-  for (int k = 0; k < 3; ++k) {
-    const int h = HalfedgeMesh::halfedge(f, k), p = m_.tail(h), q = m_.tip(h);
-    if ((isInput(p) != isInput(q)) && mirror_[p] != q && !(mirror_[p] == p || mirror_[q] == q)) hd = h;
-  }
-  if (hd < 0) throw notSymmetric(f, "a face of both sides without a diagonal of a trapezoid");
+// the Delaunay flips pick one of its diagonals a–b' or b–a' (`hd`, a halfedge of f), neither mirror-symmetric. One
+// crossing side may be a self-symmetric loop at a boundary vertex b = b' (findSymmetricLoopFaces). Its input half is
+// the quad (a, b, m_b, m_a) with right angles at the midpoints, triangulated (a, b, m_b), (a, m_b, m_a): |a m_b| is
+// the median from a in the triangle (a, b, b') (whose side a–b' is the diagonal when that was chosen, else found from
+// the other triangle by symmetry), |m_a m_b| the other leg of the right triangle (a, m_a, m_b).
+void DoubleHalver::addTrapezoid(int f, int hd) {
   if (trapezoidDone_.empty()) trapezoidDone_.assign(m_.nEdges(), 0);
   if (trapezoidDone_[m_.edge(hd)]) return;
   trapezoidDone_[m_.edge(hd)] = 1;
@@ -248,11 +311,14 @@ void DoubleHalver::addTrapezoid(int f) {
                                  m_.tip(HalfedgeMesh::next(hd))};
   const std::array<int, 4> sideH{HalfedgeMesh::next(t), HalfedgeMesh::prev(t), HalfedgeMesh::next(hd),
                                  HalfedgeMesh::prev(hd)};  // cycle[i] → cycle[i+1]
+  // The side a → b of the input's half: followed by the crossing side b → b' and preceded by a' → a, with a or b an
+  // input vertex off the mirror (the other may be the boundary vertex of a loop side).
   int r = 0;
-  while (r < 4 && !(isInput(cycle[r]) && isInput(cycle[(r + 1) % 4]))) ++r;
-  if (r == 4) throw notSymmetric(f, "a trapezoid without two input vertices side by side");
-  const int a = cycle[r], b = cycle[(r + 1) % 4], bm = cycle[(r + 2) % 4], am = cycle[(r + 3) % 4];
-  if (bm != mirror_[b] || am != mirror_[a]) throw notSymmetric(f, "a trapezoid whose copies are not its mirror images");
+  while (r < 4 && !((isInput(cycle[r]) || isInput(cycle[(r + 1) % 4])) &&
+                    mirror_[cycle[(r + 1) % 4]] == cycle[(r + 2) % 4] && mirror_[cycle[r]] == cycle[(r + 3) % 4]))
+    ++r;
+  if (r == 4) throw notSymmetric(f, "a trapezoid without an input side between two crossing sides");
+  const int a = cycle[r], b = cycle[(r + 1) % 4];
   const int hab = sideH[r], hb = sideH[(r + 1) % 4], hcopy = sideH[(r + 2) % 4], ha = sideH[(r + 3) % 4];
   noteAsymmetry(d_.length(hab), d_.length(hcopy));
   ++out_.trapezoids;
@@ -303,16 +369,16 @@ GeodesicHalf DoubleHalver::build() {
 
 GeodesicHalf halveSymmetricDouble(const IntrinsicTriangulation& doubled, const std::vector<int>& mirror, int nInput,
                                   const FlowCorrespondence& log, const HalfedgeMesh& doubleInput, int inputFaces) {
-  std::vector<signed char> side = classifyFaces(doubled.mesh, mirror, nInput);
-  sidesFromCentroids(doubled.mesh, log, inputFaces, side);
-  std::vector<char> firstHalf(doubled.mesh.nFaces(), 0);
-  findSymmetricLoopFaces(doubled, mirror, log, doubleInput, inputFaces, side, firstHalf);
+  FaceSides sides = classifyFaces(doubled.mesh, mirror, nInput);
+  findSymmetricLoopFaces(doubled, mirror, log, doubleInput, inputFaces, sides);
+  sidesFromCentroids(doubled.mesh, log, inputFaces, sides.side);
   DoubleHalver halver(doubled, mirror, nInput);
   for (int f = 0; f < doubled.mesh.nFaces(); ++f) {
-    if (side[f] == kInput) halver.addKeptFace(f);
-    if (side[f] == kSplit) halver.addSplitFace(f);
-    if (side[f] == kTrapezoid) halver.addTrapezoid(f);
-    if (side[f] == kSplitLoop) halver.addSplitLoop(f, firstHalf[f]);
+    const signed char side = sides.side[f];
+    if (side == kInput) halver.addKeptFace(f);
+    if (side == kSplit) halver.addSplitFace(f);
+    if (side == kTrapezoid) halver.addTrapezoid(f, sides.diagonal[f]);
+    if (side == kSplitLoop) halver.addSplitLoop(f, sides.firstHalf[f]);
   }
   return halver.build();
 }
