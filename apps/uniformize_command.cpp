@@ -195,9 +195,9 @@ void runUniformize(const UniformizeOptions& o) {
   if (r.target == intrinsic::UniformizationTarget::FlatCylinder)
     std::printf("  %-30s %.12g (circumference 2 pi; = log(R/r) of the annulus)\n", "cylinder height", r.cylinderHeight);
   if (!u.insertedVertices.empty())
-    std::printf("  %-30s %d (vertices %d..%d, where the double's flipped edges cross its mirror)\n",
-                "inserted boundary vertices", static_cast<int>(u.insertedVertices.size()),
-                u.insertedVertices.front().vertex, u.insertedVertices.back().vertex);
+    std::printf("  %-30s %d (vertices %d..%d, %s)\n", "inserted boundary vertices",
+                static_cast<int>(u.insertedVertices.size()), u.insertedVertices.front().vertex,
+                u.insertedVertices.back().vertex, intrinsic::insertionReason(u).c_str());
 }
 
 }  // namespace

@@ -320,3 +320,37 @@ TEST_CASE("uniformize cylinder_locally_refined.off: a crawling flow ends as a st
   const int nF = j["verification"]["faces_checked"].get<int>();
   CHECK(nF == 16442 + j["inserted_boundary_vertex_count"].get<int>());  // F = 2V − V_∂ − 2χ
 }
+
+// Issue #18: b9_mesh.off, 47 components. Component 0 (genus 1, 16 loops) goes through its double (§3.4), whose
+// triangulation has a trapezoid with a self-symmetric loop as one parallel side (it was refused as "not
+// mirror-symmetric at vertex 1009") and hyperbolic lengths of 10⁻⁸ (the median by acosh of a rounded argument was 0):
+// its area is −2πχ = 32π. Three circle domains of 3, 5 and 8 loops, whose flows stall against boundary edges, are
+// flowed again with boundary edges split (docs/ricci_flow.md §3.3, "Boundary edges split"): inserted vertices on input
+// boundary edges, every loop on its circle (the verification), residuals within the tolerance.
+TEST_CASE("uniformize b9_mesh.off: the double's loop trapezoids, circle domains with boundary edges split") {
+  const auto j = uniformizedReport("b9_mesh.off", "b9_mesh_uniformized.ply");
+  CHECK(j["verification"]["passed"] == true);
+  REQUIRE(j["component_count"] == 47);
+  int split = 0;
+  for (const auto& c : j["components"]) {
+    INFO("component " << c["component"]);
+    CHECK(c["max_curvature_residual"].get<double>() <= 1e-10);
+    if (c.contains("inserted_by") && c["inserted_by"] == "boundary-splits") {
+      CHECK(c["target"] == "circle-domain");
+      ++split;
+      CHECK(c["boundary_loops"].get<int>() >= 3);
+      for (const auto& q : c["inserted_boundary_vertices"]) {
+        CHECK(q["parameter"].get<double>() > 0);
+        CHECK(q["parameter"].get<double>() < 1);
+      }
+    }
+  }
+  CHECK(split == 3);
+  const auto& c0 = j["components"][0];
+  CHECK(c0["target"] == "hyperbolic-geodesic-boundary");
+  CHECK(c0["genus"] == 1);
+  CHECK(c0["boundary_loops"] == 16);
+  CHECK(c0["inserted_boundary_vertex_count"].get<int>() > 0);
+  const double area = 32 * M_PI;  // −2πχ, χ = 2 − 2·1 − 16
+  CHECK(std::abs(c0["total_area"].get<double>() - area) <= 1e-9 * area);
+}

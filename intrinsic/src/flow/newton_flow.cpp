@@ -516,7 +516,7 @@ bool NewtonFlowSolver::acceptByEnergy(double t, double newNorm2, double norm2Old
   return std::isfinite(dE) && 0.5 * t * std::abs(slope0_) > roundOff && dE <= options_.armijo * t * slope0_;
 }
 
-std::string NewtonFlowSolver::worstVertex() const {
+std::pair<int, double> NewtonFlowSolver::worstResidual() const {
   int worst = -1;
   double err = 0;
   for (int v : equations_) {
@@ -526,6 +526,11 @@ std::string NewtonFlowSolver::worstVertex() const {
       err = rv;
     }
   }
+  return {worst, err};
+}
+
+std::string NewtonFlowSolver::worstVertex() const {
+  const auto [worst, err] = worstResidual();
   std::ostringstream msg;
   msg.precision(3);
   msg << "worst at vertex " << worst << " (Θ̂ − Θ = " << err << " rad)";
@@ -617,7 +622,7 @@ void NewtonFlowSolver::throwStalled(const std::vector<double>& u0, const NewtonS
       << (usesEnergy() ? ": no step decreases the energy, max |Θ̂ − Θ| = "
                        : ": no step decreases |Θ̂ − Θ|, max |Θ̂ − Θ| = ")
       << maxAbs_ << " rad, tolerance " << report_.effectiveTolerance << "; " << worstVertex();
-  throw ConvergenceError(msg.str());
+  throw ConvergenceError(msg.str(), worstResidual().first);
 }
 
 // === stopping tests
@@ -661,7 +666,7 @@ void NewtonFlowSolver::checkCrawl(double t, double before) {
   msg << "discrete Ricci flow stalled at Newton step " << report_.newtonSteps << ": " << kCrawlRun
       << " steps of length below 2^-8 reduced max |Θ̂ − Θ| only from " << crawlFrom_ << " to " << maxAbs_
       << " rad, tolerance " << report_.effectiveTolerance << "; " << worstVertex();
-  throw ConvergenceError(msg.str());
+  throw ConvergenceError(msg.str(), worstResidual().first);
 }
 
 void NewtonFlowSolver::checkStepCap() const {
@@ -671,7 +676,7 @@ void NewtonFlowSolver::checkStepCap() const {
   msg << "discrete Ricci flow did not converge in " << options_.maxNewtonSteps
       << " Newton steps: max |Θ̂ − Θ| = " << maxAbs_ << " rad, tolerance " << report_.effectiveTolerance << "; "
       << worstVertex();
-  throw ConvergenceError(msg.str());
+  throw ConvergenceError(msg.str(), worstResidual().first);
 }
 
 bool NewtonFlowSolver::finishStep(const NewtonStepInfo& info, double t) {

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -67,6 +68,7 @@ class NewtonFlowSolver {
   bool usesEnergy() const { return bg_ == Background::Euclidean && !circles_ && !options_.allowDegenerateFaces; }
   double energyHere(double& magnitude) const;  // conformalEnergy at the last evaluated point (up to a constant)
   bool acceptByEnergy(double t, double newNorm2, double norm2Old);
+  std::pair<int, double> worstResidual() const;  // (v, Θ̂_v − Θ_v) of the largest |Θ̂ − Θ| at the last point
   std::string worstVertex() const;  // "vertex v (Θ̂ − Θ = …)" at the last evaluated point
   void restoreStart(const std::vector<double>& u0);
   bool stopAtDegenerateStart(const std::vector<double>& u0);

@@ -16,6 +16,7 @@
 #include "conformesh/intrinsic/flow/discrete_conformal.h"
 #include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/triangle_geometry.h"
+#include "flow/boundary_split.h"
 #include "flow/disk_double.h"
 #include "flow/geodesic_half.h"
 #include "flow/inscribed_disk.h"
@@ -277,8 +278,22 @@ Uniformization circleDomainFromHalf(const IntrinsicTriangulation& input, const D
   return out;
 }
 
+// Which boundary edges a round of circleDomainWithSplitBoundary splits first (the other rule when that finds none).
+enum class SplitRule { DegenerateFirst, WorstVertexFirst };
+struct SplitRound {
+  int round = 0;  // how many rounds of boundary splits the input has been through
+  SplitRule rule = SplitRule::DegenerateFirst;
+};
+
+Uniformization circleDomainWithSplitBoundary(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                             const UniformizationReport& report, const IntrinsicTriangulation& stalled,
+                                             const ConvergenceError& failed, SplitRound split);
+Uniformization splitBoundaryOnce(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                 const UniformizationReport& report, const IntrinsicTriangulation& stalled,
+                                 const ConvergenceError& failed, SplitRound split);
+
 Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const UniformizationOptions& options,
-                                      UniformizationReport report) {
+                                      UniformizationReport report, SplitRound splitRound = {}) {
   report.target = UniformizationTarget::CircleDomain;
   DiscreteConformalMetric metric(referencePenner(input), Background::Euclidean);
   const HalfedgeMesh& m = metric.mesh();  // boundary edges are never flipped, so loops keep their halfedge edges
@@ -340,7 +355,10 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
         throw ConvergenceError(std::string(failed.what()) + "; the flat cylinder: " + again.what());
       }
     }
-    if (loopTips.size() != 1) throw;
+    if (loopTips.size() != 1)
+      return splitRound.round == 0
+                 ? circleDomainWithSplitBoundary(input, options, report, metric.triangulation(), failed, splitRound)
+                 : splitBoundaryOnce(input, options, report, metric.triangulation(), failed, splitRound);
     // A disk: start again from its double's sphere, projected (docs/ricci_flow.md §3.3, "The double").
     if (options.progress)
       options.progress(std::string("circle domain: ") + failed.what() + "; restarting from the double");
@@ -411,6 +429,70 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
   for (std::size_t v = 0; v < planar.size(); ++v)
     out.positions[v] = Eigen::Vector3d(planar[v].x() - centre.x(), planar[v].y() - centre.y(), 0.0);
   out.report = report;
+  return out;
+}
+
+// Boundary edges are split where the flow of a circle domain with several loops fails (docs/ricci_flow.md §3.3,
+// "Boundary edges split"), on the input's own piecewise flat metric, and the flow starts again on the subdivision. Two
+// ways a target is out of the flow's reach with boundary edges that never flip: a face degenerates against a boundary
+// edge — an interior vertex crowds against the chord of its loop, the angle opposite that edge going to π
+// (b9_mesh.off's component 2) — and a boundary vertex whose angle sum cannot come down to its circle's target (a small
+// inner loop whose chords at that vertex are near a diameter: component 13). The rules: split the boundary edges whose
+// opposite (extended) angle is at least kSplitOppositeAngle (far above the ≤ π/2 of a Delaunay boundary edge; the
+// degenerate faces have π), or the two at the flow's worst vertex when it is on the boundary; a round takes one rule
+// first and the other when the first finds nothing. Neither is a theorem: `uniformize` tries the degenerate-first
+// chain, then the worst-vertex-first chain, each of at most kMaxBoundarySplitRounds rounds (each a whole flow), and
+// every result is verified like any circle domain (angle sums, loops on their circles).
+constexpr double kSplitOppositeAngle = 0.75 * M_PI;
+constexpr int kMaxBoundarySplitRounds = 6;
+
+std::vector<int> boundaryEdgesToSplit(const IntrinsicTriangulation& stalled, const ConvergenceError& failed,
+                                      SplitRule rule) {
+  std::vector<int> degenerate = detail::boundaryEdgesOpposite(stalled, kSplitOppositeAngle);
+  std::vector<int> worst = detail::boundaryEdgesAt(stalled, failed.vertex());
+  if (rule == SplitRule::WorstVertexFirst) std::swap(degenerate, worst);
+  return degenerate.empty() ? worst : degenerate;
+}
+
+// The degenerate-first chain of rounds, then the worst-vertex-first chain, each from the input.
+Uniformization circleDomainWithSplitBoundary(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                             const UniformizationReport& report, const IntrinsicTriangulation& stalled,
+                                             const ConvergenceError& failed, SplitRound) {
+  try {
+    return splitBoundaryOnce(input, options, report, stalled, failed, {0, SplitRule::DegenerateFirst});
+  } catch (const ConvergenceError& first) {
+    try {
+      return splitBoundaryOnce(input, options, report, stalled, failed, {0, SplitRule::WorstVertexFirst});
+    } catch (const ConvergenceError& second) {
+      throw ConvergenceError(std::string(failed.what()) + "; boundary edges split at degenerate faces first: " +
+                             first.what() + "; at the worst vertex first: " + second.what());
+    }
+  }
+}
+
+// One round: the edges of the rule split on `input`, whose flow failed (`stalled`, `failed`), and the circle domain of
+// the subdivision, its inserted vertices composed back onto `input`'s edges.
+Uniformization splitBoundaryOnce(const IntrinsicTriangulation& input, const UniformizationOptions& options,
+                                 const UniformizationReport& report, const IntrinsicTriangulation& stalled,
+                                 const ConvergenceError& failed, SplitRound split) {
+  const std::vector<int> edges = boundaryEdgesToSplit(stalled, failed, split.rule);
+  if (split.round > 0 && (edges.empty() || split.round >= kMaxBoundarySplitRounds))
+    throw ConvergenceError("after " + std::to_string(split.round) + " rounds, " + failed.what() +
+                           (edges.empty() ? "; no boundary edge to split"
+                                          : "; the cap of " + std::to_string(kMaxBoundarySplitRounds) + " rounds"));
+  if (edges.empty()) throw ConvergenceError("no boundary edge to split");
+  const detail::BoundarySplit subdivided = detail::splitBoundaryEdges(referencePenner(input), edges);
+  if (options.progress) {
+    std::ostringstream line;
+    line << "circle domain: " << failed.what() << "; splitting " << edges.size() << " boundary edges ("
+         << (split.rule == SplitRule::DegenerateFirst ? "degenerate faces" : "worst vertex") << " first, round "
+         << split.round + 1 << ")";
+    options.progress(line.str());
+  }
+  Uniformization out = uniformizeCircleDomain(subdivided.tri, options, report, {split.round + 1, split.rule});
+  out.insertedVertices = detail::composeInserted(input, subdivided, out.insertedVertices);
+  out.insertion = Uniformization::Insertion::BoundarySplits;
+  out.correspondence = FlowCorrespondence(0);
   return out;
 }
 
@@ -630,12 +712,16 @@ ComponentUniformization uniformizeComponents(const IntrinsicTriangulation& input
   return out;
 }
 
+std::string insertionReason(const Uniformization& u) {
+  return u.insertion == Uniformization::Insertion::BoundarySplits ? "by splitting boundary edges"
+                                                                  : "where the double's flipped edges cross its mirror";
+}
+
 std::string correspondenceUnavailable(const Uniformization& u) {
   if (u.insertedVertices.empty()) return "";
   const bool circles = u.report.target == UniformizationTarget::CircleDomain;
   return std::string(circles ? "the circle domain has " : "the surface with geodesic boundary has ") +
-         std::to_string(u.insertedVertices.size()) +
-         " boundary vertices inserted where the double's flipped edges cross its mirror";
+         std::to_string(u.insertedVertices.size()) + " boundary vertices inserted " + insertionReason(u);
 }
 
 }  // namespace conformesh::intrinsic

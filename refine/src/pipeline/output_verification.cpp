@@ -4,6 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "conformesh/intrinsic/mesh/triangle_geometry.h"
 
@@ -121,8 +125,49 @@ void checkGeodesicBoundary(const Uniformization& u, OutputVerification& v) {
   v.failures.push_back(s.str());
 }
 
-// The half of the double (uniformization.h, insertedVertices): the inserted vertices appended and on the loop, the
-// loop on the unit circle, the recomputed residual within the tolerance.
+// The circle domain's loops against their circles (uniformization.h: the longest loop the unit circle centred at 0,
+// the others circles), each to 1e-8 of its radius — the accuracy uniformize guarantees; "" when they are.
+std::string circleDomainLoopsOff(const Uniformization& u) {
+  constexpr double kCircle = 1e-8;
+  const HalfedgeMesh& m = u.uniform.mesh;
+  double outerRadius = 0;
+  Eigen::Vector2d outerCentre(0, 0);
+  std::ostringstream s;
+  s.precision(3);
+  int index = 0;
+  for (const std::vector<int>& loop : m.boundaryLoops()) {
+    const int k = static_cast<int>(loop.size());
+    auto z = [&](int i) { return Eigen::Vector2d(u.positions[m.tail(loop[i])].x(), u.positions[m.tail(loop[i])].y()); };
+    // The circle through three spread vertices: the perpendicular bisectors of a–b and a–c meet at the centre.
+    const Eigen::Vector2d a = z(0), b = z(k / 3), c = z((2 * k) / 3);
+    const Eigen::Vector2d ab = b - a, ac = c - a;
+    const double d = 2 * (ab.x() * ac.y() - ab.y() * ac.x());
+    const Eigen::Vector2d centre = a + Eigen::Vector2d(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
+                                                       ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) /
+                                           d;
+    const double r = (a - centre).norm();
+    double deviation = 0;
+    for (int i = 0; i < k; ++i) deviation = std::max(deviation, std::abs((z(i) - centre).norm() - r) / r);
+    if (!(deviation <= kCircle)) {
+      s << "the circle domain's boundary loop " << index << " is off its circle by " << deviation
+        << " of its radius (tolerance 1e-08)";
+      return s.str();
+    }
+    if (r > outerRadius) {
+      outerRadius = r;
+      outerCentre = centre;
+    }
+    ++index;
+  }
+  if (!(std::abs(outerRadius - 1) <= kCircle && outerCentre.norm() <= kCircle))
+    s << "the circle domain's outer loop is the circle of radius " << outerRadius << " about (" << outerCentre.x()
+      << ", " << outerCentre.y() << "), not the unit circle (tolerance 1e-08)";
+  return s.str();
+}
+
+// Inserted boundary vertices (uniformization.h, insertedVertices: the half of the double, or boundary edges split):
+// appended and on the boundary; a circle domain's loops on their circles, the outer the unit circle; the residual
+// within the tolerance.
 void checkInsertedVertices(const Uniformization& u, OutputVerification& v) {
   const HalfedgeMesh& m = u.uniform.mesh;
   const int inserted = static_cast<int>(u.insertedVertices.size()), first = m.nVertices() - inserted;
@@ -137,16 +182,12 @@ void checkInsertedVertices(const Uniformization& u, OutputVerification& v) {
     checkGeodesicBoundary(u, v);
     return;
   }
-  double circle = 0;
-  if (u.positions.size() == static_cast<std::size_t>(m.nVertices()))
-    for (int w = 0; w < m.nVertices(); ++w)
-      if (m.isBoundaryVertex(w)) circle = std::max(circle, std::abs(u.positions[w].norm() - 1));
   std::ostringstream s;
   s.precision(3);
   if (u.positions.size() != static_cast<std::size_t>(m.nVertices()))
     s << "the circle domain has " << u.positions.size() << " positions for " << m.nVertices() << " vertices";
-  else if (!(circle <= 1e-8))
-    s << "the circle domain's boundary is off the unit circle by " << circle << " (tolerance 1e-08)";
+  else if (const std::string off = circleDomainLoopsOff(u); !off.empty())
+    s << off;
   else if (!(u.report.maxResidual <= u.report.effectiveTolerance))
     s << "the circle domain's max |K - K^| " << u.report.maxResidual << " exceeds the tolerance "
       << u.report.effectiveTolerance;

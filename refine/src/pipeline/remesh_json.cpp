@@ -147,12 +147,14 @@ nlohmann::json uniformizedJson(const intrinsic::Uniformization& u) {
   }
   if (r.target == intrinsic::UniformizationTarget::FlatCylinder) j["cylinder_height"] = r.cylinderHeight;
   if (!u.insertedVertices.empty()) {
-    // The half of the double (uniformization.h): vertices V.. of T0* on input boundary edges.
+    // The half of the double or boundary edges split (uniformization.h): vertices V.. of T0* on input boundary edges.
     nlohmann::json inserted = nlohmann::json::array();
     for (const auto& q : u.insertedVertices)
       inserted.push_back({{"vertex", q.vertex}, {"input_edge", q.inputEdge}, {"parameter", q.parameter}});
     j["inserted_boundary_vertex_count"] = u.insertedVertices.size();
     j["inserted_boundary_vertices"] = inserted;
+    j["inserted_by"] =
+        u.insertion == intrinsic::Uniformization::Insertion::BoundarySplits ? "boundary-splits" : "mirror-crossings";
   }
   return j;
 }

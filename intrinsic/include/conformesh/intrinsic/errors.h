@@ -17,10 +17,17 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// An iterative method stopped without reaching its tolerance (Newton, flipping, refinement caps).
+// An iterative method stopped without reaching its tolerance (Newton, flipping, refinement caps). `vertex()`: where a
+// flow stopped worst (the vertex its message names), −1 when the error does not name one; the circle domains' boundary
+// splits read it (docs/ricci_flow.md §3.3).
 class ConvergenceError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  ConvergenceError(const std::string& what, int vertex) : std::runtime_error(what), vertex_(vertex) {}
+  int vertex() const { return vertex_; }
+
+ private:
+  int vertex_ = -1;
 };
 
 // Formats "where: what" with an optional source name, e.g. "mesh.obj:12: face 7 repeats vertex 3".

@@ -83,16 +83,17 @@ struct Uniformization {
   FlowCorrespondence correspondence;
   UniformizationReport report;
   // Only for a T0* taken as the half of the double (circle domains, docs/ricci_flow.md §3.3 "The half"; geodesic
-  // boundary, §3.4): the vertices of T0* that are not vertices of T0, each on an input boundary edge at
-  // `parameter` ∈ [0, 1] from
-  // tail(edgeHalfedge(inputEdge)), in the input's lengths. When non-empty, T0* has T0's vertices 0..V−1 plus these,
-  // its connectivity is not reached from T0's by flips, and `correspondence` is empty (0 faces: its maps throw
-  // InputError) — the flip log cannot carry inserted vertices.
+  // boundary, §3.4) or flowed on the input with boundary edges split (circle domains of several loops, §3.3 "Boundary
+  // edges split"; `insertion` says which): the vertices of T0* that are not vertices of T0, each on an input boundary
+  // edge at `parameter` ∈ [0, 1] from tail(edgeHalfedge(inputEdge)), in the input's (reference) lengths. When
+  // non-empty, T0* has T0's vertices 0..V−1 plus these, its connectivity is not reached from T0's by flips, and
+  // `correspondence` is empty (0 faces: its maps throw InputError) — the flip log cannot carry inserted vertices.
   struct InsertedVertex {
     int vertex = -1, inputEdge = -1;
     double parameter = 0;
   };
   std::vector<InsertedVertex> insertedVertices;
+  enum class Insertion { MirrorCrossings, BoundarySplits } insertion = Insertion::MirrorCrossings;
 };
 
 // Uniformizes `input` (any background: its Penner lengths are its chords). A disk whose circle-domain flow fails is
@@ -100,17 +101,22 @@ struct Uniformization {
 // circle domain is the half of the double's sphere, with boundary vertices inserted (insertedVertices, "The half of
 // the double"); a disk without interior vertices is developed onto its circle directly. A target with geodesic
 // boundary (hyperbolic, flat cylinder — also an annulus whose circle-domain flow fails) whose own flow fails is the
-// half of its double's closed uniformization, again with boundary vertices inserted (§3.4). Throws InputError for invalid
-// options (options.validate()), more than one connected component (uniformizeComponents below takes those) or invalid
-// lengths; ConvergenceError (with the residual reached) when a flow does not converge, when a circle domain's layout
-// does not reproduce a loop's circle (three or more loops; an annulus falls back to the flat cylinder), or when a flat
-// cylinder's two ends differ in length (docs/ricci_flow.md §3.3).
+// half of its double's closed uniformization, again with boundary vertices inserted (§3.4); a circle domain of three or
+// more loops whose flow fails is flowed again with boundary edges split at their midpoints (§3.3). Throws InputError
+// for invalid options (options.validate()), more than one connected component (uniformizeComponents below takes those)
+// or invalid lengths; ConvergenceError (with the residual reached) when a flow does not converge, when a circle
+// domain's layout does not reproduce a loop's circle (three or more loops; an annulus falls back to the flat cylinder),
+// or when a flat cylinder's two ends differ in length (docs/ricci_flow.md §3.3).
 Uniformization uniformize(const IntrinsicTriangulation& input, const UniformizationOptions& options = {});
 
 // Why `u.correspondence` cannot map T0* back to T0, for callers that need it (the pull-back, a written flip log), or
 // "" when it can: "the circle domain (the surface with geodesic boundary) has N boundary vertices inserted where the
-// double's flipped edges cross its mirror" (u.insertedVertices non-empty).
+// double's flipped edges cross its mirror" (or "… inserted by splitting boundary edges"; u.insertedVertices
+// non-empty).
 std::string correspondenceUnavailable(const Uniformization& u);
+// Where u's inserted vertices come from: "where the double's flipped edges cross its mirror" or "by splitting boundary
+// edges".
+std::string insertionReason(const Uniformization& u);
 
 // A surface of several connected components, each uniformized to its own target by its own topology (the targets
 // above), in splitComponents' order.

@@ -60,8 +60,9 @@ nlohmann::json remeshEmbeddingErrorJson(const std::string& error);
 nlohmann::json meshSummaryJson(const intrinsic::MeshSummary& s);
 // The dict of `uniformize --json` without the file names and the method: target, background, genus, boundary loops,
 // Newton steps, flips, residuals, the worst interior angle sum error, Gauss–Bonnet, area, seconds, and the sphere's
-// puncture figures or the cylinder's height where they apply; for the half of the double (uniformization.h)
-// inserted_boundary_vertex_count and inserted_boundary_vertices (vertex, input_edge, parameter each).
+// puncture figures or the cylinder's height where they apply; for the half of the double or boundary edges split
+// (uniformization.h) inserted_boundary_vertex_count, inserted_boundary_vertices (vertex, input_edge, parameter each)
+// and inserted_by ("mirror-crossings" or "boundary-splits").
 nlohmann::json uniformizedJson(const intrinsic::Uniformization& u);
 // A component's topology as the component dicts carry it: component (index), vertices, edges, faces, boundary_loops,
 // euler_characteristic, genus.
