@@ -100,11 +100,11 @@ struct Uniformization {
 // circle domain is the half of the double's sphere, with boundary vertices inserted (insertedVertices, "The half of
 // the double"); a disk without interior vertices is developed onto its circle directly. A target with geodesic
 // boundary (hyperbolic, flat cylinder — also an annulus whose circle-domain flow fails) whose own flow fails is the
-// half of its double's closed uniformization, again with boundary vertices inserted (§3.4). Throws InputError for invalid
-// options (options.validate()), more than one connected component (uniformizeComponents below takes those) or invalid
-// lengths; ConvergenceError (with the residual reached) when a flow does not converge, when a circle domain's layout
-// does not reproduce a loop's circle (three or more loops; an annulus falls back to the flat cylinder), or when a flat
-// cylinder's two ends differ in length (docs/ricci_flow.md §3.3).
+// half of its double's closed uniformization, again with boundary vertices inserted (§3.4). Throws InputError for
+// invalid options (options.validate()), more than one connected component (uniformizeComponents below takes those) or
+// invalid lengths; ConvergenceError (with the residual reached) when a flow does not converge, when a circle domain's
+// layout does not reproduce a loop's circle (three or more loops; an annulus falls back to the flat cylinder), or when
+// a flat cylinder's two ends differ in length (docs/ricci_flow.md §3.3).
 Uniformization uniformize(const IntrinsicTriangulation& input, const UniformizationOptions& options = {});
 
 // Why `u.correspondence` cannot map T0* back to T0, for callers that need it (the pull-back, a written flip log), or
@@ -136,5 +136,12 @@ double maxInteriorAngleSumError(const IntrinsicTriangulation& tri);
 // The worst angle-sum error of a surface with geodesic boundary (hyperbolic, flat cylinder): |Θ − 2π| inside, |Θ − π|
 // on the boundary (radians, in its own background geometry); the vertex where it is in `worstVertex` if given.
 double maxGeodesicBoundaryResidual(const IntrinsicTriangulation& tri, int* worstVertex = nullptr);
+
+// The worst |Θ̂ − Θ| of a Euclidean circle domain recomputed from `tri`'s lengths (radians): Θ̂ = target.angleSum
+// off the loops, and π − σ (φ_prev + φ_next) on each of target.circleLoops from the inscribed polygon of its sides
+// (inscribedPolygon; docs/ricci_flow.md §3.3), the flow's residual but read from the lengths as written rather than
+// from u. The vertex where it is in `worstVertex` if given. Throws ConvergenceError when a loop cannot be inscribed.
+double maxCircleDomainResidual(const IntrinsicTriangulation& tri, const ConformalTarget& target,
+                               int* worstVertex = nullptr);
 
 }  // namespace conformesh::intrinsic
