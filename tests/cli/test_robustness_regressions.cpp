@@ -4,17 +4,22 @@
 
 #include "support/cli_runner.h"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "conformesh/intrinsic/io/mesh_io.h"
+#include "conformesh/intrinsic/mesh/curvature.h"
 #include "conformesh/intrinsic/mesh/intrinsic_triangulation.h"
+#include "conformesh/intrinsic/mesh/mesh_components.h"
 
 namespace fs = std::filesystem;
 using conformesh::testing::runConformesh;
@@ -353,4 +358,55 @@ TEST_CASE("uniformize b9_mesh.off: the double's loop trapezoids, circle domains 
   CHECK(c0["inserted_boundary_vertex_count"].get<int>() > 0);
   const double area = 32 * M_PI;  // −2πχ, χ = 2 − 2·1 − 16
   CHECK(std::abs(c0["total_area"].get<double>() - area) <= 1e-9 * area);
+}
+
+// Issue #18: boeing.off's component 68, a strip of 32 vertices and 30 faces with no interior vertex (smallest angle
+// on its circle 2.9e-6 rad), was refused: its factors u, developed onto the circle in quadruple precision, were rounded
+// to double, and at |u| ≈ 12 one ulp of u moves the angle sums by ≈ 3e-10; the flow stalled at 1.15e-10. Its lengths
+// are now computed in quadruple precision and rounded once (docs/ricci_flow.md §3.3). Checked on the written file:
+// every vertex's angle sum Θ against π − φ_prev − φ_next, φ = asin(ℓ/2) the half central angle of a side on the unit
+// circle, to the tolerance 1e-10, and Gauss–Bonnet, the boundary turning Σ (π − Θ) = 2π of a flat disk, to round-off.
+TEST_CASE(
+    "uniformize boeing.off's 32-vertex all-boundary strip: on the unit circle to 1e-10 from the written lengths") {
+  const conformesh::intrinsic::MeshData boeing = conformesh::intrinsic::readMesh(mesh("boeing.off"));
+  const auto components = conformesh::intrinsic::splitComponents(conformesh::intrinsic::toTriangulation(boeing));
+  REQUIRE(components.size() == 122);
+  const conformesh::intrinsic::MeshComponent& strip = components[68];
+  REQUIRE(strip.vertices.size() == 32);
+  REQUIRE(strip.faces.size() == 30);
+  conformesh::intrinsic::MeshData data;
+  data.nVertices = 32;
+  for (int v : strip.vertices) data.positions.push_back(boeing.positions[v]);
+  for (int f : strip.faces) {
+    std::array<int, 3> corners{};
+    for (int k = 0; k < 3; ++k)
+      corners[k] = static_cast<int>(std::lower_bound(strip.vertices.begin(), strip.vertices.end(), boeing.faces[f][k]) -
+                                    strip.vertices.begin());
+    data.faces.push_back(corners);
+  }
+  const fs::path in = conformesh::testing::scratchDir() / "boeing_strip68.off";
+  conformesh::intrinsic::writeMesh(data, in.string());
+  const fs::path out = conformesh::testing::scratchDir() / "boeing_strip68_circle.ply";
+  const auto r = runConformesh("-q uniformize " + in.string() + " -o " + out.string() + " --json");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["target"] == "circle-domain");
+  CHECK(j["max_curvature_residual"].get<double>() <= 1e-10);
+  CHECK(j["verification"]["passed"] == true);
+  const auto t = conformesh::intrinsic::toTriangulation(conformesh::intrinsic::readMesh(out.string()));
+  REQUIRE(t.mesh.nVertices() == 32);
+  const std::vector<double> sums = angleSums(t);
+  double worst = 0, turning = 0;
+  for (const std::vector<int>& loop : t.mesh.boundaryLoops())
+    for (int h : loop) {  // h enters v = tip(h); the next boundary halfedge leaves it
+      const int v = t.mesh.tip(h), n = t.mesh.nextBoundaryHalfedge(h);
+      const double target =
+          M_PI - std::asin(t.edgeLengths[t.mesh.edge(h)] / 2) - std::asin(t.edgeLengths[t.mesh.edge(n)] / 2);
+      worst = std::max(worst, std::abs(target - sums[v]));
+      turning += M_PI - sums[v];
+    }
+  CHECK(worst <= 1e-10);
+  const double roundOff = 16 * 30 * 2.220446049250313e-16 * M_PI;  // F faces, three angles of size ≤ π each
+  CHECK(std::abs(turning - 2 * M_PI) <= roundOff);
 }

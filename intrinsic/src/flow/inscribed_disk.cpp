@@ -83,16 +83,16 @@ Quad angleOppositeQuad(const Quad& a, const Quad& b, const Quad& c) {
 // precision.) Then e^{v_d} = |x_d − x_a||x_d − x_b| ℓ⁰_ab / (|x_a − x_b| ℓ⁰_ad ℓ⁰_bd) is d's factor on the line, and
 // the Cayley map onto the unit circle, |z_i − z_j| = 2|x_i − x_j| / √((1 + x_i²)(1 + x_j²)), adds log 2 − log(1 +
 // x_d²).
-std::vector<double> developOntoCircle(const HalfedgeMesh& m, const std::vector<double>& reference, int root) {
+std::vector<Quad> developOntoCircle(const HalfedgeMesh& m, const std::vector<double>& reference, int root) {
   std::vector<Quad> x(m.nVertices(), Quad(0));
-  std::vector<double> u(m.nVertices(), 0.0);
+  std::vector<Quad> u(m.nVertices(), Quad(0));
   auto ref = [&](int h) { return Quad(reference[m.edge(h)]); };
   // d's factor from its face: halfedges hab (a → b) and the two sides at d, with the reference lengths.
   auto factorOf = [&](int d, int a, int b, const Quad& lab, const Quad& lad, const Quad& lbd) {
     using boost::multiprecision::abs;
     using boost::multiprecision::log;
     const Quad line = log(abs(x[d] - x[a]) * abs(x[d] - x[b]) * lab / (abs(x[a] - x[b]) * lad * lbd));
-    u[d] = static_cast<double>(line + log(Quad(2)) - log(1 + x[d] * x[d]));
+    u[d] = line + log(Quad(2)) - log(1 + x[d] * x[d]);
   };
   std::vector<char> placed(m.nVertices(), 0), visited(m.nFaces(), 0);
   // The root face keeps its own shape: its corners go where its circumcircle puts them (the arc between two corners
@@ -143,18 +143,34 @@ std::vector<double> developOntoCircle(const HalfedgeMesh& m, const std::vector<d
 
 // The shortest edge of the development over its circle's diameter (the unit circle: diameter 2); non-finite lengths
 // are skipped.
-double shortestChord(const DiscreteConformalMetric& metric) {
+double shortestChord(const std::vector<double>& lengths) {
   double shortest = std::numeric_limits<double>::infinity();
-  for (int e = 0; e < metric.mesh().nEdges(); ++e) shortest = std::min(shortest, metric.length(e) / 2);
+  for (double l : lengths) shortest = std::min(shortest, l / 2);
   return shortest;
+}
+
+// Whether every face satisfies the triangle inequality with these lengths (per edge) in double.
+bool allFacesValidIn(const HalfedgeMesh& m, const std::vector<double>& lengths) {
+  for (int f = 0; f < m.nFaces(); ++f)
+    if (!isValidTriangle(Background::Euclidean, lengths[m.edge(HalfedgeMesh::halfedge(f, 0))],
+                         lengths[m.edge(HalfedgeMesh::halfedge(f, 1))], lengths[m.edge(HalfedgeMesh::halfedge(f, 2))]))
+      return false;
+  return true;
 }
 
 }  // namespace
 
-void inscribeDiskWithoutInterior(DiscreteConformalMetric& metric) {
+std::vector<double> inscribeDiskWithoutInterior(DiscreteConformalMetric& metric) {
   const HalfedgeMesh& m = metric.mesh();
-  metric.u() = developOntoCircle(m, metric.referencePennerLengths(), dualTreeCentre(m));
-  if (metric.allFacesValid()) return;
+  const std::vector<Quad> u = developOntoCircle(m, metric.referencePennerLengths(), dualTreeCentre(m));
+  for (int v = 0; v < m.nVertices(); ++v) metric.u()[v] = static_cast<double>(u[v]);
+  std::vector<double> lengths(m.nEdges());
+  for (int e = 0; e < m.nEdges(); ++e) {
+    const int h = m.edgeHalfedge(e);
+    lengths[e] = static_cast<double>(boost::multiprecision::exp((u[m.tail(h)] + u[m.tip(h)]) / 2) *
+                                     Quad(metric.referencePenner(e)));
+  }
+  if (allFacesValidIn(m, lengths)) return lengths;
   // A long strip crowds its ends exponentially (a rectangle L × w: chords ~ e^{−πL/2w} of the diameter). Three
   // vertices on a circle at chords δ (in diameters) leave the triangle inequality a relative margin ≈ δ²/2, which
   // lengths rounded to double (relative 1.1·10⁻¹⁶) keep only down to δ ≈ 10⁻⁸: below that the circle domain itself
@@ -164,7 +180,7 @@ void inscribeDiskWithoutInterior(DiscreteConformalMetric& metric) {
   message << "uniformize: disk without interior vertices: its circle domain is not representable in double precision "
              "(developed in quadruple precision, a face violates the triangle inequality once its lengths are rounded "
              "to double; shortest finite chord "
-          << shortestChord(metric) << " diameters): a long strip, whose circle domain crowds its ends exponentially";
+          << shortestChord(lengths) << " diameters): a long strip, whose circle domain crowds its ends exponentially";
   throw ConvergenceError(message.str());
 }
 

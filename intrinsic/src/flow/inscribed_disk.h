@@ -1,7 +1,10 @@
 // inscribed_disk.h (private) — the circle domain of a disk whose vertices all lie on its boundary (a triangulated
 // polygon), developed face by face onto its circle by cross-ratios in quadruple precision instead of solved by the flow
-// (docs/ricci_flow.md §3.3, "Disks without interior vertices"). Writes the metric's u only.
+// (docs/ricci_flow.md §3.3, "Disks without interior vertices"). Writes the metric's u
+// and returns the lengths.
 #pragma once
+
+#include <vector>
 
 #include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/flow/discrete_conformal.h"
@@ -11,10 +14,13 @@ namespace conformesh::intrinsic::detail {
 // Sets metric.u() (Euclidean background) so that every vertex lies on the unit circle: the development starts from the
 // middle face of a longest dual path; each further face's new vertex is placed on the other arc of the edge it is
 // reached across. Each face must be reached exactly once (the dual graph of a triangulated polygon is a tree).
+// Returns the development's edge lengths (per edge of metric.mesh()), e^{(u_a+u_b)/2} ℓ⁰_ab computed from the
+// quadruple-precision u and rounded once to double: what a length from the rounded u cannot be, since an ulp of u
+// (|u| up to ≈ 12 at a crowded end) is ≈ 8× the rounding of the length itself.
 // Throws ConvergenceError when a vertex is reached twice (not a triangulated polygon), or when a face is outside the
-// triangle inequality once its lengths are rounded to double (a strip so long that its circle domain's chords are
-// below what double-precision lengths resolve, ≈ 10⁻⁸ diameters; the message gives the shortest chord).
-void inscribeDiskWithoutInterior(DiscreteConformalMetric& metric);
+// triangle inequality with those lengths (a strip so long that its circle domain's chords are below what
+// double-precision lengths resolve, ≈ 10⁻⁸ diameters; the message gives the shortest chord).
+std::vector<double> inscribeDiskWithoutInterior(DiscreteConformalMetric& metric);
 
 // When the flow's polish of such a development fails: `failed` with the reason added if it is round-off — the
 // smallest corner angle θ of the developed disk (at `metric`'s u) makes double's error in the angle sums ≈ ε/θ

@@ -88,6 +88,27 @@ double maxGeodesicBoundaryResidual(const IntrinsicTriangulation& tri, int* worst
   return worst;
 }
 
+double maxCircleDomainResidual(const IntrinsicTriangulation& tri, const ConformalTarget& target, int* worstVertex) {
+  std::vector<double> sums = angleSums(tri), targets = target.angleSum;
+  for (std::size_t i = 0; i < target.circleLoops.size(); ++i) {
+    const ConformalTarget::CircleLoop& loop = target.circleLoops[i];
+    const int len = static_cast<int>(loop.edges.size());
+    std::vector<double> sides(len);
+    for (int j = 0; j < len; ++j) sides[j] = tri.edgeLengths[loop.edges[j]];
+    const std::vector<double> phi = inscribedPolygon(sides, static_cast<int>(i)).halfAngle;
+    for (int j = 0; j < len; ++j) targets[loop.vertices[j]] = M_PI - loop.sign * (phi[j] + phi[(j + 1) % len]);
+  }
+  double worst = 0;
+  for (int v = 0; v < tri.mesh.nVertices(); ++v) {
+    const double e = std::abs(targets[v] - sums[v]);
+    if (!(e <= worst)) {
+      worst = e;
+      if (worstVertex) *worstVertex = v;
+    }
+  }
+  return worst;
+}
+
 namespace {
 
 using detail::accumulate;
@@ -278,6 +299,28 @@ Uniformization circleDomainFromHalf(const IntrinsicTriangulation& input, const D
   return out;
 }
 
+// The flow's report for a disk without interior vertices developed onto its circle (inscribed_disk.h), as if the flow
+// had taken 0 Newton steps, but with the residual recomputed from the development's `lengths` (computed in quadruple
+// precision and rounded once) instead of from the rounded u: at |u| ≈ 12 an ulp of u moves a length by ≈ 9·10⁻¹⁶
+// relative, 8× the rounding of the length itself (ε/2), and a corner angle θ turns that into ≈ 9·10⁻¹⁶/θ in the angle
+// sums (boeing.off's 32-vertex strip, θ = 2.9·10⁻⁶: 5.3·10⁻¹⁰ from the rounded u, where the flow stalled at
+// 1.15·10⁻¹⁰; 4.0·10⁻¹¹ from the lengths rounded once; docs/ricci_flow.md §3.3). The tolerance is the flow's
+// stopping rule (newton_flow.cpp).
+RicciFlowReport developedDiskReport(const DiscreteConformalMetric& metric, const std::vector<double>& lengths,
+                                    const ConformalTarget& target, const RicciFlowOptions& flowOptions) {
+  IntrinsicTriangulation developed = metric.triangulation();
+  developed.edgeLengths = lengths;
+  RicciFlowReport report;
+  report.effectiveTolerance =
+      std::max(flowOptions.tolerance, flowOptions.relativeFloor * std::sqrt(double(metric.nVertices())));
+  report.maxResidual = maxCircleDomainResidual(developed, target);
+  std::vector<double> sides;
+  for (int e : target.circleLoops[0].edges) sides.push_back(lengths[e]);
+  report.circleRadii = {inscribedPolygon(sides, 0).radius};
+  report.angleSums = angleSums(developed);
+  return report;
+}
+
 // Which boundary edges a round of circleDomainWithSplitBoundary splits first (the other rule when that finds none).
 enum class SplitRule { DegenerateFirst, WorstVertexFirst };
 struct SplitRound {
@@ -331,15 +374,22 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
   }
   bool interior = false;
   for (int v = 0; v < m.nVertices(); ++v) interior = interior || !m.isBoundaryVertex(v);
-  if (loopTips.size() == 1 && !interior) {
-    // Developed onto its circle directly; the flow below then only polishes the round-off (0 Newton steps when below
-    // the tolerance, as for every polygon of up to 8 vertices in boeing.off).
-    detail::inscribeDiskWithoutInterior(metric);
-    if (options.progress) options.progress("circle domain: no interior vertex, developed onto its circle");
-  }
+  std::vector<double> developed;  // a disk without interior vertices: its lengths on the unit circle
   RicciFlowReport flow;
+  bool onCircle = false;
+  if (loopTips.size() == 1 && !interior) {
+    // Developed onto its circle directly, its lengths computed in quadruple precision and rounded once; the flow
+    // below runs only when those lengths miss the tolerance (it starts from the rounded u and polishes the round-off).
+    developed = detail::inscribeDiskWithoutInterior(metric);
+    flow = developedDiskReport(metric, developed, target, options.flow);
+    onCircle = flow.maxResidual <= flow.effectiveTolerance;
+    if (options.progress)
+      options.progress(onCircle
+                           ? "circle domain: no interior vertex, developed onto its circle"
+                           : "circle domain: no interior vertex, developed onto its circle; polishing by the flow");
+  }
   try {
-    flow = solveConformalFlow(metric, target, withProgress(options, "circle domain"), &log);
+    if (!onCircle) flow = solveConformalFlow(metric, target, withProgress(options, "circle domain"), &log);
   } catch (const ConvergenceError& failed) {
     if (loopTips.size() == 1 && !interior)
       throw detail::explainInscribedFailure(metric, options.flow.tolerance, failed);
@@ -384,13 +434,18 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
     }
   }
   accumulate(report, flow);
-  std::vector<double> radius = flow.circleRadii;
-  // Scale so that the outer circle is the unit circle: lengths scale by e^{Δu}.
-  const double shift = -std::log(radius[outer]);
-  for (double& x : metric.u()) x += shift;
-
   Uniformization out;
-  out.uniform = metric.triangulation();
+  if (onCircle) {
+    // The development is on the unit circle to quadruple precision: rescaling by the radius measured in double
+    // (1 to a few ulps) would round every length a second time.
+    out.uniform = metric.triangulation();
+    out.uniform.edgeLengths = developed;
+  } else {
+    // Scale so that the outer circle is the unit circle: lengths scale by e^{Δu}.
+    const double shift = -std::log(flow.circleRadii[outer]);
+    for (double& x : metric.u()) x += shift;
+    out.uniform = metric.triangulation();
+  }
   attachScale(out, metric.u(), log);
   const std::vector<Eigen::Vector2d> planar = layoutFlat(out.uniform);
   // Centre the outer circle at the origin: circumcentre of three well-spread outer vertices.
@@ -561,7 +616,6 @@ Uniformization uniformizeConstant(const IntrinsicTriangulation& input, const Uni
   return out;
 }
 
-
 // === geodesic boundary through the double (docs/ricci_flow.md §3.4)
 
 void addSolveCounts(UniformizationReport& report, const UniformizationReport& solve) {
@@ -587,9 +641,8 @@ Uniformization geodesicBoundaryFromDouble(const IntrinsicTriangulation& input, c
       geometry == Background::Hyperbolic ? UniformizationTarget::Hyperbolic : UniformizationTarget::FlatTorus;
   const Uniformization closed = uniformizeConstant(twin.surface, quiet, closedReport, geometry);
   const int n = input.mesh.nVertices();
-  detail::GeodesicHalf half =
-      detail::halveSymmetricDouble(closed.uniform, twin.mirror, n, closed.correspondence, twin.surface.mesh,
-                                   twin.diskFaces);
+  detail::GeodesicHalf half = detail::halveSymmetricDouble(closed.uniform, twin.mirror, n, closed.correspondence,
+                                                           twin.surface.mesh, twin.diskFaces);
   // The inserted vertices are the split edges' midpoints.
   std::vector<FacePoint> midpoints;
   std::vector<detail::HalfBoundaryVertex> where(half.splitFrom.size());
@@ -627,8 +680,8 @@ Uniformization geodesicBoundaryFromDouble(const IntrinsicTriangulation& input, c
   if (options.progress)
     options.progress("double: halved, " + std::to_string(out.insertedVertices.size()) +
                      " boundary vertices inserted where its edges cross the mirror (faces split " +
-                     std::to_string(half.splitFaces) + ", trapezoids " + std::to_string(half.trapezoids) +
-                     ", loops " + std::to_string(half.splitLoops) + ")");
+                     std::to_string(half.splitFaces) + ", trapezoids " + std::to_string(half.trapezoids) + ", loops " +
+                     std::to_string(half.splitLoops) + ")");
   out.report = report;
   return out;
 }

@@ -2,8 +2,8 @@
 // with three and four boundary loops): interior angle sums 2π in the background geometry from the lengths as written to
 // and read back from PLY, Gauss–Bonnet with the area term, boundary loops concyclic, λ consistent with the Penner
 // relation; the flat torus of a torus of revolution against its exact modulus i·r/√(R² − r²), with the order of a
-// log–log fit; an ellipsoid's chart discretization against its conformal latitude and conformal factor (order 2); a planar annulus (already a circle domain) reproduced
-// exactly; inadmissible inputs reported.
+// log–log fit; an ellipsoid's chart discretization against its conformal latitude and conformal factor (order 2); a
+// planar annulus (already a circle domain) reproduced exactly; inadmissible inputs reported.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -18,16 +18,16 @@
 
 #include <Eigen/Sparse>
 
+#include "conformesh/intrinsic/errors.h"
+#include "conformesh/intrinsic/flow/discrete_conformal.h"
+#include "conformesh/intrinsic/flow/uniformization.h"
+#include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/measure/convergence_order.h"
 #include "conformesh/intrinsic/mesh/curvature.h"
-#include "conformesh/intrinsic/flow/discrete_conformal.h"
-#include "conformesh/intrinsic/errors.h"
 #include "conformesh/intrinsic/mesh/intrinsic_flips.h"
 #include "conformesh/intrinsic/mesh/mesh_generators.h"
-#include "conformesh/intrinsic/io/mesh_io.h"
 #include "conformesh/intrinsic/metric/metric_discretization.h"
 #include "conformesh/intrinsic/metric/metric_registry.h"
-#include "conformesh/intrinsic/flow/uniformization.h"
 
 #include "support/flat_torus_modulus.h"
 #include "support/gauss_bonnet_bound.h"
@@ -229,7 +229,8 @@ TEST_CASE("an ellipsoid of revolution converges to its conformal latitude at ord
   // stalls (2.0e-3, 5.0e-4, 2.5e-4, 2.9e-4) and λ's error GROWS (1.1e-3, 1.6e-3, 3.1e-3, 4.7e-3; rotated before
   // scaling: 2.9e-3 to 1.3e-2), with the centring on; without it both are O(0.1). Those meshes are centrally
   // symmetric, so any symmetric centring weights give the same balanced map: the weights are not the cause; the
-  // discrete conformal structure of the squashed icosphere does not converge to the ellipsoid's (docs/ricci_flow.md §6).
+  // discrete conformal structure of the squashed icosphere does not converge to the ellipsoid's (docs/ricci_flow.md
+  // §6).
   const double c = 0.6, e = std::sqrt(1 - c * c);
   const auto metric = makeMetric("ellipsoid", {{"a", 1.0}, {"f", 1 - c}});
   std::vector<double> hs, angleErrors, lambdaErrors;
@@ -407,12 +408,13 @@ TEST_CASE("disks with no interior vertex: a triangle is its own circle domain, a
 
 TEST_CASE("disks with no interior vertex in CGAL's boeing.off: on their circle, or refused as long strips") {
   // boeing.off: 122 components; among them 92 disks whose vertices all lie on the boundary (strips of 4 to 51
-  // vertices). Developed by cross-ratios in quadruple precision (inscribed_disk.h), 91 are on their circle with the
-  // flow's residual below the tolerance 10⁻¹⁰ and circles to 10⁻⁸ (the layout check), the 51-vertex strip (component
-  // 20) among them; before, the recursion in u through the placed faces' angles multiplied its round-off near the
-  // crowded ends and refused every strip of 14 or more vertices but a few. The other one (32 vertices) is at double's
-  // round-off floor: its smallest angle (2.9·10⁻⁶ rad) puts the angle sums' error at ≈ ε/θ ≈ 7.7·10⁻¹¹, and the flow
-  // stalls at 1.15·10⁻¹⁰; it is refused as a long strip, with those numbers, never laid out wrongly.
+  // vertices). Developed by cross-ratios in quadruple precision (inscribed_disk.h), their lengths computed there and
+  // rounded once, all 92 are on their circle with the residual below the tolerance 10⁻¹⁰ and circles to 10⁻⁸ (the
+  // layout check), the 51-vertex strip (component 20) among them; before, the recursion in u through the placed
+  // faces' angles multiplied its round-off near the crowded ends and refused every strip of 14 or more vertices but a
+  // few. The 32-vertex strip (component 68; smallest angle 2.9·10⁻⁶ rad, ε/θ ≈ 7.7·10⁻¹¹) was refused while its
+  // lengths came from u rounded to double (1.15·10⁻¹⁰ after the flow); rounded once, 4.0·10⁻¹¹. A strip refused here
+  // would be named as a long strip at double's round-off floor, never laid out wrongly.
   const IntrinsicTriangulation input = toTriangulation(readMesh(dataFile("boeing.off")));
   int inscribed = 0, refused = 0, longest = 0;
   for (const MeshComponent& c : splitComponents(input)) {
@@ -433,8 +435,19 @@ TEST_CASE("disks with no interior vertex in CGAL's boeing.off: on their circle, 
     }
   }
   CHECK(inscribed + refused == 92);
-  CHECK(inscribed >= 91);
+  CHECK(inscribed == 92);
   CHECK(longest == 51);
+}
+
+TEST_CASE("an all-boundary strip below double's resolution on its circle is refused, naming it (ALSTOM_TEST4.off)") {
+  // Component 1 of CGAL's ALSTOM_TEST4.off (36 vertices, no interior vertex): developed onto its circle in quadruple
+  // precision, its shortest chord is 3.5·10⁻⁹ diameters, where three vertices on the circle leave the triangle
+  // inequality a relative margin ≈ δ²/2 ≈ 6·10⁻¹⁸, below a double length's rounding: refused, not laid out wrongly.
+  const IntrinsicTriangulation strip =
+      splitComponents(toTriangulation(readMesh(dataFile("ALSTOM_TEST4.off"))))[1].triangulation;
+  REQUIRE(strip.mesh.nVertices() == 36);
+  CHECK_THROWS_WITH(uniformize(strip), Catch::Contains("not representable in double precision") &&
+                                           Catch::Contains("shortest finite chord 3.51e-09 diameters"));
 }
 
 TEST_CASE("a disk whose circle-domain flow hits the step cap converges from its double's sphere (ALSTOM_TEST4.off)") {
@@ -827,8 +840,8 @@ TEST_CASE("uniformizeComponents: a sphere, a torus and a genus-2 surface in one 
   torus.m = 8;
   GenusSurfaceOptions genus2;
   genus2.resolution = 2;
-  const IntrinsicTriangulation input =
-      toTriangulation(conformesh::testing::joinByHand({makeIcosphere({2, 1.0}), makeTorus(torus), makeGenusSurface(genus2)}));
+  const IntrinsicTriangulation input = toTriangulation(
+      conformesh::testing::joinByHand({makeIcosphere({2, 1.0}), makeTorus(torus), makeGenusSurface(genus2)}));
   REQUIRE_THROWS_AS(uniformize(input), conformesh::InputError);
   const ComponentUniformization cu = uniformizeComponents(input);
   REQUIRE(cu.parts.size() == 3);

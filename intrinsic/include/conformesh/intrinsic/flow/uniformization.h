@@ -143,4 +143,11 @@ double maxInteriorAngleSumError(const IntrinsicTriangulation& tri);
 // on the boundary (radians, in its own background geometry); the vertex where it is in `worstVertex` if given.
 double maxGeodesicBoundaryResidual(const IntrinsicTriangulation& tri, int* worstVertex = nullptr);
 
+// The worst |Θ̂ − Θ| of a Euclidean circle domain recomputed from `tri`'s lengths (radians): Θ̂ = target.angleSum
+// off the loops, and π − σ (φ_prev + φ_next) on each of target.circleLoops from the inscribed polygon of its sides
+// (inscribedPolygon; docs/ricci_flow.md §3.3), the flow's residual but read from the lengths as written rather than
+// from u. The vertex where it is in `worstVertex` if given. Throws ConvergenceError when a loop cannot be inscribed.
+double maxCircleDomainResidual(const IntrinsicTriangulation& tri, const ConformalTarget& target,
+                               int* worstVertex = nullptr);
+
 }  // namespace conformesh::intrinsic
