@@ -57,6 +57,7 @@ class Development {
   void start(int face);  // face laid out canonically: corner 0 at 0, corner 1 on the x axis
   int face() const { return face_; }
   Eigen::Vector2d point(const Eigen::Vector3d& b) const { return b[0] * c_[0] + b[1] * c_[1] + b[2] * c_[2]; }
+  const Eigen::Vector2d& corner(int k) const { return c_[k]; }
 
   // Unfolds the neighbour across side k (corner k → k+1) of the current face. False on the boundary.
   bool across(int k);

@@ -41,6 +41,10 @@ void ImagePathPullBack::run(MeshRemeshResult& out) {
   out.mesh.mesh = refined_.triangulation.mesh;
   out.mesh.background = Background::Euclidean;
   out.mesh.edgeLengths = lengths;
+  if (const int flips = untangleFolds(out))
+    out.notices.push_back("pull-back: " + std::to_string(flips) +
+                          " output edges flipped where the straight chords of bent image paths folded a triangle over "
+                          "a vertex");
   validateLengths(out.mesh, "remeshed surface (developed image-path lengths)");
 }
 
@@ -57,13 +61,51 @@ void ImagePathPullBack::mapVertices(MeshRemeshResult& out) {
     onStar.push_back({refined_.locations[v].face, {b[0], b[1], b[2]}});
   }
   const std::vector<FacePoint> onInput = u_.correspondence.mapToInput(u_.uniform.mesh, onStar);
+  for (int v = 0; v < n1; ++v) vertexImage_[v] = v < n0_ ? vertexPoint(m0, v) : toPoint(onInput[v - n0_]);
+  placeInnerArcsOnChords();
   const auto& parentCorner = input_.parentCorner;
   for (int v = 0; v < n1; ++v) {
-    vertexImage_[v] = v < n0_ ? vertexPoint(m0, v) : toPoint(onInput[v - n0_]);
     const Point& p = vertexImage_[v];
     const Eigen::Vector3d b =
         p.bary[0] * parentCorner[p.face][0] + p.bary[1] * parentCorner[p.face][1] + p.bary[2] * parentCorner[p.face][2];
     out.location[v] = {input_.parentFace[p.face], {b[0], b[1], b[2]}};
+  }
+}
+
+// Boundary vertices split on a boundary circle that bulges INTO the domain (a hole's circle of a circle domain: its
+// chords lie in the hole) sit inside a boundary face of T0*, not beyond its chord, so clampToFace leaves them there
+// and they would map into the interior of an input face, cutting the arc's cap off the output (holes.off: 96 boundary
+// vertices, area −4.4e-4 relative). Like the caps beyond a chord, such an arc is mapped onto its chord: each vertex at
+// its fraction of the arc's length between the chord's ends (the output's boundary lengths on T1*), which keeps the
+// vertices' order along the chord. A vertex that is beyond or on its chord (a coordinate ≤ 0) keeps clampToFace's foot.
+void ImagePathPullBack::placeInnerArcsOnChords() {
+  const HalfedgeMesh& m0 = input_.t0.mesh;
+  const HalfedgeMesh& m1 = refined_.triangulation.mesh;
+  std::vector<int> arc;
+  for (int h = 0; h < m1.nHalfedges(); ++h) {
+    if (m1.twin(h) != kInvalid || m1.tail(h) >= n0_ || m1.tip(h) < n0_) continue;
+    const int a = m1.tail(h);
+    arc.clear();
+    std::vector<double> at;  // arc length from a to each vertex of `arc`
+    double length = 0;
+    int g = h;
+    for (; m1.tip(g) >= n0_; g = m1.nextBoundaryHalfedge(g)) {
+      length += refined_.triangulation.length(g);
+      arc.push_back(m1.tip(g));
+      at.push_back(length);
+    }
+    length += refined_.triangulation.length(g);
+    const int chord = m0.vertexHalfedge(a);
+    if (m0.twin(chord) != kInvalid || m0.tip(chord) != m1.tip(g)) continue;  // not one T0 boundary side: left as is
+    for (std::size_t i = 0; i < arc.size(); ++i) {
+      const Eigen::Vector3d& b = refined_.locations[arc[i]].bary;
+      if (!(b.minCoeff() > 0)) continue;
+      Point p;
+      p.face = HalfedgeMesh::face(chord);
+      p.bary[chord % 3] = 1 - at[i] / length;
+      p.bary[(chord + 1) % 3] = at[i] / length;
+      vertexImage_[arc[i]] = p;
+    }
   }
 }
 
@@ -214,9 +256,11 @@ std::vector<double> ImagePathPullBack::developLengths(MeshRemeshResult& out) {
             [](const Record& x, const Record& y) { return x.order != y.order ? x.order < y.order : x.t < y.t; });
   std::vector<double> lengths(refined_.triangulation.mesh.nEdges(), 0.0);
   Development dev(input_.t0);
+  charts_.assign(lengths.size(), EdgeChart{});
   for (std::size_t i = 0; i < records_.size();) {
     const int e = records_[i].edge;
     dev.start(records_[i].r.faceA);
+    const int start = dev.face();
     const Eigen::Vector2d from = dev.point(records_[i].r.a);
     Eigen::Vector3d at = records_[i].r.a;  // the current point, in the current face
     for (; i < records_.size() && records_[i].edge == e; ++i) {
@@ -233,9 +277,127 @@ std::vector<double> ImagePathPullBack::developLengths(MeshRemeshResult& out) {
       at = r.b;
     }
     lengths[e] = (dev.point(at) - from).norm();
+    charts_[e] = chartOf(e, start, from, dev, at);
     if (lengths[e] > 0) out.maxBendExcess = std::max(out.maxBendExcess, pathLength_[e] / lengths[e] - 1);
   }
   return lengths;
+}
+
+// The chart of output edge e (EdgeChart) from its development: `from` its tail's image in the canonical layout of
+// face `startFace`, `end` the development at its last face, where `at` is its tip's image.
+ImagePathPullBack::EdgeChart ImagePathPullBack::chartOf(int e, int startFace, const Eigen::Vector2d& from,
+                                                        const Development& end, const Eigen::Vector3d& at) const {
+  // The motion taking the canonical layout of d's current face onto d's layout of it (corner 0 at 0, 1 on the x axis).
+  const auto layoutMotion = [](const Development& d) {
+    const Eigen::Vector2d u = (d.corner(1) - d.corner(0)).normalized();
+    PlaneMotion p;
+    p.R << u.x(), -u.y(), u.y(), u.x();
+    p.t = d.corner(0);
+    return p;
+  };
+  const HalfedgeMesh& m1 = refined_.triangulation.mesh;
+  const int h = m1.edgeHalfedge(e), a = m1.tail(h), b = m1.tip(h);
+  EdgeChart c;
+  c.tail = a;
+  Development toTip = end;
+  if (b >= n0_ && !toTip.moveTo(vertexImage_[b].face, at, -1)) return c;
+  c.motion = layoutMotion(toTip);  // chart(b) → the canonical layout of startFace
+  c.pa = from;
+  c.pb = end.point(at);
+  if (a >= n0_) {
+    Development fromTail(input_.t0);
+    fromTail.start(vertexImage_[a].face);
+    if (!fromTail.moveTo(startFace, vertexImage_[a].bary, -1)) return c;
+    const PlaneMotion toA = layoutMotion(fromTail);  // startFace's canonical layout → chart(a)
+    c.motion = toA * c.motion;
+    c.pa = toA(c.pa);
+    c.pb = toA(c.pb);
+  }
+  c.ok = true;
+  return c;
+}
+
+// Each output edge's length is the straight chord of its image path, which bends at the input edges (the
+// correspondence is projective per face, not across them). Where a path bends past an output vertex, the straight
+// chord passes on its other side, and the output triangle between them is folded over: its lengths are a triangle's,
+// but laid out on T0 it is inverted, the angle sums at its corners are off and the area is not the input's
+// (reference_tetrahedron at --eps-rel 0.05: triangle (124, 341, 804), vertex 804 at 0.008 of its face's height from
+// input edge 1–3; angle sums off by −0.750, +0.392, +0.358 rad; area +1.0e-3 relative). Each triangle is laid out on T0
+// in the chart of one of its inserted vertices (from its edges' developments); an inverted one is undone by flipping
+// the edge whose flip leaves both new triangles positive, its new length measured in the same chart (the quad holds no
+// input vertex inside: both triangles are output triangles). Returns the number of flips.
+int ImagePathPullBack::untangleFolds(MeshRemeshResult& out) {
+  HalfedgeMesh& m = out.mesh.mesh;
+  const auto chart = [&](int h) -> const EdgeChart& { return charts_[m.edge(h)]; };
+  const auto forward = [&](int h) { return m.tail(h) == chart(h).tail; };
+  // Of halfedge h: its tail's and tip's images in chart(tail), its tail's in chart(tip), motion chart(tip) →
+  // chart(tail).
+  const auto tailInTail = [&](int h) { return forward(h) ? chart(h).pa : chart(h).motion.inverse()(chart(h).pb); };
+  const auto tipInTail = [&](int h) { return forward(h) ? chart(h).pb : chart(h).motion.inverse()(chart(h).pa); };
+  const auto tailInTip = [&](int h) { return forward(h) ? chart(h).motion.inverse()(chart(h).pa) : chart(h).pb; };
+  const auto motionOf = [&](int h) { return forward(h) ? chart(h).motion : chart(h).motion.inverse(); };
+  const auto usable = [&](int h) { return chart(h).ok && m.tail(h) != m.tip(h); };
+  // Twice the signed area of p, q, r, and whether it is negative beyond round-off of the sides' product.
+  const auto inverted = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    const Eigen::Vector2d u = q - p, v = r - p;
+    return u.x() * v.y() - u.y() * v.x() < -1e-12 * u.norm() * v.norm();
+  };
+  const auto faceInverted = [&](int f) {
+    for (int k = 0; k < 3; ++k) {
+      const int h = 3 * f + k, g = HalfedgeMesh::prev(h);
+      if (m.tail(h) < n0_ || !usable(h) || !usable(g)) continue;
+      return inverted(tailInTail(h), tipInTail(h), tailInTip(g));
+    }
+    return false;
+  };
+  const auto tryFlip = [&](int e) {
+    const int ha = m.edgeHalfedge(e), hb = m.twin(ha);
+    if (hb == kInvalid) return false;
+    const int na = HalfedgeMesh::next(ha), pa = HalfedgeMesh::prev(ha), nb = HalfedgeMesh::next(hb),
+              pb = HalfedgeMesh::prev(hb);
+    for (int h : {ha, na, pa, hb, nb, pb})
+      if (!usable(h)) return false;
+    const int a = m.tail(ha), b = m.tail(hb), c = m.tail(pa), d = m.tail(pb);
+    if (c == d) return false;
+    // The quad a, d, b, c in the chart of an inserted end u of e; toC, toD: chart(c), chart(d) → chart(u).
+    Eigen::Vector2d A, B, C, D;
+    PlaneMotion toC, toD;
+    if (a >= n0_) {
+      A = tailInTail(ha), B = tipInTail(ha), C = tailInTip(pa), D = tipInTail(nb);
+      toC = motionOf(pa).inverse(), toD = motionOf(nb);
+    } else if (b >= n0_) {
+      B = tailInTail(hb), A = tipInTail(hb), D = tailInTip(pb), C = tipInTail(na);
+      toC = motionOf(na), toD = motionOf(pb).inverse();
+    } else {
+      return false;
+    }
+    // After the flip (HalfedgeMesh::flip): (d, c, a) and (c, d, b), both positive beyond round-off.
+    if (!inverted(C, D, A) || !inverted(D, C, B)) return false;
+    if (!m.flip(e)) return false;
+    const PlaneMotion fromU = toD.inverse();
+    EdgeChart& n = charts_[e];
+    n.tail = d;
+    n.motion = fromU * toC;
+    n.pa = fromU(D);
+    n.pb = fromU(C);
+    n.ok = true;
+    out.mesh.edgeLengths[e] = out.pathLength[e] = (C - D).norm();
+    return true;
+  };
+  int flips = 0;
+  for (int pass = 0; pass < 8; ++pass) {
+    const int before = flips;
+    for (int f = 0; f < m.nFaces(); ++f) {
+      if (!faceInverted(f)) continue;
+      for (int k = 0; k < 3; ++k)
+        if (tryFlip(m.edge(3 * f + k))) {
+          ++flips;
+          break;
+        }
+    }
+    if (flips == before) break;
+  }
+  return flips;
 }
 
 EdgeInFace signpostEdgeInFace(const IntrinsicTriangulation& input, const RefineResult& refined) {

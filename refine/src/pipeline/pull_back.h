@@ -27,9 +27,9 @@ struct SubdividedInput {
 };
 
 // Pulls the refinement `refined` of u.uniform (T0*) back onto `input.t0`. run() fills, of `out`: location, lambda,
-// edgePieces, pathPieces, inputEdgeCrossings, pathLength, maxBendExcess and mesh (T1: Euclidean, developed lengths,
-// validated). Throws ConvergenceError naming the output edge when a trace, a bisection (60 rounds) or a development
-// fails on a degenerate input.
+// edgePieces, pathPieces, inputEdgeCrossings, pathLength, maxBendExcess, notices (fold flips) and mesh (T1: Euclidean,
+// developed lengths, validated). Throws ConvergenceError naming the output edge when a trace, a bisection (60 rounds)
+// or a development fails on a degenerate input.
 class ImagePathPullBack {
  public:
   ImagePathPullBack(const SubdividedInput& input, const intrinsic::Uniformization& u, const RefineResult& refined,
@@ -54,13 +54,36 @@ class ImagePathPullBack {
     Resolved r;
   };
 
+  // A rigid motion of the plane, x ↦ R x + t.
+  struct PlaneMotion {
+    Eigen::Matrix2d R = Eigen::Matrix2d::Identity();
+    Eigen::Vector2d t = Eigen::Vector2d::Zero();
+    Eigen::Vector2d operator()(const Eigen::Vector2d& x) const { return R * x + t; }
+    PlaneMotion inverse() const { return {R.transpose(), -(R.transpose() * t)}; }
+    PlaneMotion operator*(const PlaneMotion& o) const { return {R * o.R, R * o.t + t}; }  // this after o
+  };
+  // An output edge developed from its end `tail`: chart(v) is the canonical layout (Development::start) of the T0
+  // face of v's image for an inserted vertex; for an input vertex (a cone point), whatever chart the development
+  // started or ended in (never composed through). pa, pb: the tail's and the other end's images in chart(tail);
+  // motion: chart(other end) → chart(tail). ok: false when a development step failed (the edge is never flipped).
+  struct EdgeChart {
+    int tail = intrinsic::kInvalid;
+    PlaneMotion motion;
+    Eigen::Vector2d pa = Eigen::Vector2d::Zero(), pb = Eigen::Vector2d::Zero();
+    bool ok = false;
+  };
+
   void mapVertices(MeshRemeshResult& out);
+  void placeInnerArcsOnChords();
   void traceEdges();
   void traceEdge(int e, std::vector<EdgeCrossing>& crossings);
   void mapPieceEnds();
   void resolvePieces(MeshRemeshResult& out);
   std::vector<Piece> bisect(const std::vector<Piece>& unresolved) const;
   std::vector<double> developLengths(MeshRemeshResult& out);
+  EdgeChart chartOf(int edge, int startFace, const Eigen::Vector2d& from, const Development& end,
+                    const Eigen::Vector3d& at) const;
+  int untangleFolds(MeshRemeshResult& out);
 
   const SubdividedInput& input_;
   const intrinsic::Uniformization& u_;
@@ -74,6 +97,7 @@ class ImagePathPullBack {
   std::vector<int> firstPiece_;  // per output edge, its first piece; one past the end for the last
   std::vector<Record> records_;
   std::vector<double> pathLength_;
+  std::vector<EdgeChart> charts_;  // per output edge
 };
 
 // Whether output edge `edge` may be pictured as the straight segment of its located ends inside T0 face `face`. Two
@@ -91,7 +115,6 @@ EdgeInFace signpostEdgeInFace(const intrinsic::IntrinsicTriangulation& input, co
 // orientationChecked, sameFaceEdges, maxSameFaceLengthError, loopEdges and the first offending elements), from the
 // output vertices' points on T0. A triangle is checked in a face only when its three edges may lie in it (inFace).
 void checkAgainstLocations(const intrinsic::IntrinsicTriangulation& t0, const intrinsic::IntrinsicTriangulation& t1,
-                           const std::vector<Point>& vertexImage, MeshRemeshResult& out,
-                           const EdgeInFace& inFace = {});
+                           const std::vector<Point>& vertexImage, MeshRemeshResult& out, const EdgeInFace& inFace = {});
 
 }  // namespace conformesh::refine::detail
