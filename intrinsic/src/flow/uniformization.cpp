@@ -330,7 +330,7 @@ struct SplitRound {
 
 Uniformization circleDomainWithSplitBoundary(const IntrinsicTriangulation& input, const UniformizationOptions& options,
                                              const UniformizationReport& report, const IntrinsicTriangulation& stalled,
-                                             const ConvergenceError& failed, SplitRound split);
+                                             const ConvergenceError& failed);
 Uniformization splitBoundaryOnce(const IntrinsicTriangulation& input, const UniformizationOptions& options,
                                  const UniformizationReport& report, const IntrinsicTriangulation& stalled,
                                  const ConvergenceError& failed, SplitRound split);
@@ -407,7 +407,7 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
     }
     if (loopTips.size() != 1)
       return splitRound.round == 0
-                 ? circleDomainWithSplitBoundary(input, options, report, metric.triangulation(), failed, splitRound)
+                 ? circleDomainWithSplitBoundary(input, options, report, metric.triangulation(), failed)
                  : splitBoundaryOnce(input, options, report, metric.triangulation(), failed, splitRound);
     // A disk: start again from its double's sphere, projected (docs/ricci_flow.md §3.3, "The double").
     if (options.progress)
@@ -512,7 +512,7 @@ std::vector<int> boundaryEdgesToSplit(const IntrinsicTriangulation& stalled, con
 // The degenerate-first chain of rounds, then the worst-vertex-first chain, each from the input.
 Uniformization circleDomainWithSplitBoundary(const IntrinsicTriangulation& input, const UniformizationOptions& options,
                                              const UniformizationReport& report, const IntrinsicTriangulation& stalled,
-                                             const ConvergenceError& failed, SplitRound) {
+                                             const ConvergenceError& failed) {
   try {
     return splitBoundaryOnce(input, options, report, stalled, failed, {0, SplitRule::DegenerateFirst});
   } catch (const ConvergenceError& first) {
