@@ -136,4 +136,18 @@ std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, doubl
   return PlanarUnfolding(tri, mismatch, skipFaces).run();
 }
 
+LoopCircle fitLoopCircle(const std::vector<Eigen::Vector2d>& z, const std::vector<int>& loop) {
+  const int k = static_cast<int>(loop.size());
+  const Eigen::Vector2d &A = z[loop[0]], &B = z[loop[k / 3]], &C = z[loop[(2 * k) / 3]];
+  // The circumcentre of A, B, C.
+  const double d = 2 * (A.x() * (B.y() - C.y()) + B.x() * (C.y() - A.y()) + C.x() * (A.y() - B.y()));
+  LoopCircle c;
+  c.centre = {
+      (A.squaredNorm() * (B.y() - C.y()) + B.squaredNorm() * (C.y() - A.y()) + C.squaredNorm() * (A.y() - B.y())) / d,
+      (A.squaredNorm() * (C.x() - B.x()) + B.squaredNorm() * (A.x() - C.x()) + C.squaredNorm() * (B.x() - A.x())) / d};
+  c.radius = (A - c.centre).norm();
+  for (int v : loop) c.deviation = std::max(c.deviation, std::abs((z[v] - c.centre).norm() - c.radius) / c.radius);
+  return c;
+}
+
 }  // namespace conformesh::intrinsic

@@ -184,14 +184,6 @@ double annulusLogRadiusRatioLowerBound(const IntrinsicTriangulation& tri, const 
   return energy > 0 ? 2 * M_PI / energy : std::numeric_limits<double>::quiet_NaN();
 }
 
-// Centre of the circle through A, B, C.
-Eigen::Vector2d circumcentre(const Eigen::Vector2d& A, const Eigen::Vector2d& B, const Eigen::Vector2d& C) {
-  const double d = 2 * (A.x() * (B.y() - C.y()) + B.x() * (C.y() - A.y()) + C.x() * (A.y() - B.y()));
-  return {
-      (A.squaredNorm() * (B.y() - C.y()) + B.squaredNorm() * (C.y() - A.y()) + C.squaredNorm() * (A.y() - B.y())) / d,
-      (A.squaredNorm() * (C.x() - B.x()) + B.squaredNorm() * (A.x() - C.x()) + C.squaredNorm() * (B.x() - A.x())) / d};
-}
-
 // Boundary loops as edge lists (halfedge indices move with flips; edge indices and their endpoints on the boundary
 // do not), and which loop is the longest in the input metric (the outer circle).
 struct BoundaryLoops {
@@ -449,18 +441,14 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
   attachScale(out, metric.u(), log);
   const std::vector<Eigen::Vector2d> planar = layoutFlat(out.uniform);
   // Centre the outer circle at the origin: circumcentre of three well-spread outer vertices.
-  const std::vector<int>& tips = loopTips[outer];
-  const int n = static_cast<int>(tips.size());
-  const Eigen::Vector2d centre = circumcentre(planar[tips[0]], planar[tips[n / 3]], planar[tips[(2 * n) / 3]]);
+  const Eigen::Vector2d centre = fitLoopCircle(planar, loopTips[outer]).centre;
   // The flow makes every loop concyclic in its lengths; the layout must reproduce that, which it cannot once a loop is
   // too small for the outer circle's coordinates (a silent wrong domain otherwise).
   for (std::size_t i = 0; i < loopTips.size(); ++i) {
     const std::vector<int>& t = loopTips[i];
     const int k = static_cast<int>(t.size());
-    const Eigen::Vector2d c = circumcentre(planar[t[0]], planar[t[k / 3]], planar[t[(2 * k) / 3]]);
-    const double r = (planar[t[0]] - c).norm();
-    double deviation = 0;
-    for (int v : t) deviation = std::max(deviation, std::abs((planar[v] - c).norm() - r) / r);
+    const LoopCircle fit = fitLoopCircle(planar, t);
+    const double deviation = fit.deviation, r = fit.radius;
     if (!(deviation <= kMaxLoopCircleDeviation) && loopTips.size() == 2) {
       // The pre-check's bound was below the limit but the modulus is not: the flat cylinder (see above).
       if (options.progress)

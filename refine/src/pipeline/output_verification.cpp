@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "conformesh/intrinsic/flow/planar_layout.h"
 #include "conformesh/intrinsic/mesh/triangle_geometry.h"
 
 namespace conformesh::refine {
@@ -130,38 +131,27 @@ void checkGeodesicBoundary(const Uniformization& u, OutputVerification& v) {
 std::string circleDomainLoopsOff(const Uniformization& u) {
   constexpr double kCircle = 1e-8;
   const HalfedgeMesh& m = u.uniform.mesh;
-  double outerRadius = 0;
-  Eigen::Vector2d outerCentre(0, 0);
+  std::vector<Eigen::Vector2d> z(u.positions.size());
+  for (std::size_t v = 0; v < z.size(); ++v) z[v] = u.positions[v].head<2>();
+  LoopCircle outer;
   std::ostringstream s;
   s.precision(3);
   int index = 0;
-  for (const std::vector<int>& loop : m.boundaryLoops()) {
-    const int k = static_cast<int>(loop.size());
-    auto z = [&](int i) { return Eigen::Vector2d(u.positions[m.tail(loop[i])].x(), u.positions[m.tail(loop[i])].y()); };
-    // The circle through three spread vertices: the perpendicular bisectors of a–b and a–c meet at the centre.
-    const Eigen::Vector2d a = z(0), b = z(k / 3), c = z((2 * k) / 3);
-    const Eigen::Vector2d ab = b - a, ac = c - a;
-    const double d = 2 * (ab.x() * ac.y() - ab.y() * ac.x());
-    const Eigen::Vector2d centre = a + Eigen::Vector2d(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
-                                                       ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) /
-                                           d;
-    const double r = (a - centre).norm();
-    double deviation = 0;
-    for (int i = 0; i < k; ++i) deviation = std::max(deviation, std::abs((z(i) - centre).norm() - r) / r);
-    if (!(deviation <= kCircle)) {
-      s << "the circle domain's boundary loop " << index << " is off its circle by " << deviation
+  for (const std::vector<int>& halfedges : m.boundaryLoops()) {
+    std::vector<int> loop;
+    for (int h : halfedges) loop.push_back(m.tail(h));
+    const LoopCircle fit = fitLoopCircle(z, loop);
+    if (!(fit.deviation <= kCircle)) {
+      s << "the circle domain's boundary loop " << index << " is off its circle by " << fit.deviation
         << " of its radius (tolerance 1e-08)";
       return s.str();
     }
-    if (r > outerRadius) {
-      outerRadius = r;
-      outerCentre = centre;
-    }
+    if (fit.radius > outer.radius) outer = fit;
     ++index;
   }
-  if (!(std::abs(outerRadius - 1) <= kCircle && outerCentre.norm() <= kCircle))
-    s << "the circle domain's outer loop is the circle of radius " << outerRadius << " about (" << outerCentre.x()
-      << ", " << outerCentre.y() << "), not the unit circle (tolerance 1e-08)";
+  if (!(std::abs(outer.radius - 1) <= kCircle && outer.centre.norm() <= kCircle))
+    s << "the circle domain's outer loop is the circle of radius " << outer.radius << " about (" << outer.centre.x()
+      << ", " << outer.centre.y() << "), not the unit circle (tolerance 1e-08)";
   return s.str();
 }
 

@@ -21,4 +21,13 @@ namespace conformesh::intrinsic {
 std::vector<Eigen::Vector2d> layoutFlat(const IntrinsicTriangulation& tri, double mismatch = 1e-6,
                                         const std::vector<char>& skipFaces = {});
 
+// A boundary loop of a laid-out circle domain against its circle: the circle through three spread vertices of `loop`
+// (indices into `z`: its first, one a third and one two thirds along) and the largest relative deviation
+// |‖z_v − centre‖ − radius| / radius of the loop's vertices from it. Used by uniformize and by the output verification.
+struct LoopCircle {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double radius = 0, deviation = 0;
+};
+LoopCircle fitLoopCircle(const std::vector<Eigen::Vector2d>& z, const std::vector<int>& loop);
+
 }  // namespace conformesh::intrinsic
