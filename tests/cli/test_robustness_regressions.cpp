@@ -431,3 +431,49 @@ TEST_CASE(
   const double roundOff = 16 * 30 * 2.220446049250313e-16 * M_PI;  // F faces, three angles of size ≤ π each
   CHECK(std::abs(turning - 2 * M_PI) <= roundOff);
 }
+
+// Issue #18: boeing.off's component 117, a 125-gon with one interior vertex (degree 4, in a quadrilateral whose two
+// opposite sides are boundary edges), is not a flow failure but a circle domain beyond double precision. Its 109 faces
+// with every corner on the boundary (111 vertices, one side of the quadrilateral's diagonal chord) form a strip whose
+// own circle domain — a Möbius image of that part of the disk's — has two crowded ends with chords of ≈ 4e-14
+// diameters (the centre face's frame: 3.82e-14), where three concyclic vertices keep the triangle inequality only to
+// ≈ δ²/2 ≈ 1e-27 relative (docs/ricci_flow.md §3.3). The circle-domain flow crawled at 2.93 rad and the double's
+// sphere degenerated (faces flat to round-off, Hessian rows zero), with no cause given; the refusal now names it.
+TEST_CASE("uniformize boeing.off's component 117: refused, citing its all-boundary part beyond double precision") {
+  const conformesh::intrinsic::MeshData boeing = conformesh::intrinsic::readMesh(mesh("boeing.off"));
+  const auto components = conformesh::intrinsic::splitComponents(conformesh::intrinsic::toTriangulation(boeing));
+  REQUIRE(components.size() == 122);
+  const conformesh::intrinsic::MeshComponent& disk = components[117];
+  REQUIRE(disk.vertices.size() == 126);
+  REQUIRE(disk.faces.size() == 125);
+  conformesh::intrinsic::MeshData data;
+  data.nVertices = 126;
+  for (int v : disk.vertices) data.positions.push_back(boeing.positions[v]);
+  for (int f : disk.faces) {
+    std::array<int, 3> corners{};
+    for (int k = 0; k < 3; ++k)
+      corners[k] = static_cast<int>(std::lower_bound(disk.vertices.begin(), disk.vertices.end(), boeing.faces[f][k]) -
+                                    disk.vertices.begin());
+    data.faces.push_back(corners);
+  }
+  const fs::path in = conformesh::testing::scratchDir() / "boeing_disk117.off";
+  conformesh::intrinsic::writeMesh(data, in.string());
+  const auto t = conformesh::intrinsic::toTriangulation(conformesh::intrinsic::readMesh(in.string()));
+  int interior = 0;
+  for (int v = 0; v < t.mesh.nVertices(); ++v) interior += !t.mesh.isBoundaryVertex(v);
+  REQUIRE(interior == 1);
+  REQUIRE(t.mesh.boundaryLoops().size() == 1);
+  const fs::path out = conformesh::testing::scratchDir() / "boeing_disk117_circle.ply";
+  const auto r = runConformesh("-q uniformize " + in.string() + " -o " + out.string());
+  INFO(r.err);
+  CHECK(r.status != 0);
+  CHECK_FALSE(fs::exists(out));
+  CHECK(r.err.find("the 109 faces with every corner on the boundary") != std::string::npos);
+  CHECK(r.err.find("(111 vertices)") != std::string::npos);
+  CHECK(r.err.find("not representable in double precision") != std::string::npos);
+  // The shortest chord it reports is below what double-precision lengths resolve (≈ 1e-8 diameters).
+  const std::string key = "shortest finite chord ";
+  const std::size_t at = r.err.rfind(key);
+  REQUIRE(at != std::string::npos);
+  CHECK(std::stod(r.err.substr(at + key.size())) < 1e-8);
+}

@@ -3,8 +3,10 @@
 #include "flow/inscribed_disk.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -158,6 +160,69 @@ bool allFacesValidIn(const HalfedgeMesh& m, const std::vector<double>& lengths) 
   return true;
 }
 
+// The faces of `m` whose three corners all lie on the boundary, grouped into parts joined across interior edges;
+// each part as its face list.
+std::vector<std::vector<int>> allBoundaryParts(const HalfedgeMesh& m) {
+  std::vector<char> allBoundary(m.nFaces(), 0);
+  for (int f = 0; f < m.nFaces(); ++f)
+    allBoundary[f] = m.isBoundaryVertex(m.faceVertex(f, 0)) && m.isBoundaryVertex(m.faceVertex(f, 1)) &&
+                     m.isBoundaryVertex(m.faceVertex(f, 2));
+  std::vector<char> seen(m.nFaces(), 0);
+  std::vector<std::vector<int>> parts;
+  for (int start = 0; start < m.nFaces(); ++start) {
+    if (!allBoundary[start] || seen[start]) continue;
+    std::vector<int> part{start};
+    seen[start] = 1;
+    for (std::size_t i = 0; i < part.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const int twin = m.twin(HalfedgeMesh::halfedge(part[i], k));
+        if (twin == kInvalid || !allBoundary[HalfedgeMesh::face(twin)] || seen[HalfedgeMesh::face(twin)]) continue;
+        seen[HalfedgeMesh::face(twin)] = 1;
+        part.push_back(HalfedgeMesh::face(twin));
+      }
+    parts.push_back(std::move(part));
+  }
+  return parts;
+}
+
+// The faces `part` of `reference` as a triangulation of their own (vertices renumbered, edge ids kept so that
+// multi-edges stay apart); null when they do not form a disk (Euler characteristic 1, one boundary loop), which a
+// part can fail to be where it touches itself at a vertex.
+std::unique_ptr<DiscreteConformalMetric> partAsDisk(const IntrinsicTriangulation& reference,
+                                                    const std::vector<int>& part) {
+  const HalfedgeMesh& m = reference.mesh;
+  std::vector<int> vertex(m.nVertices(), -1), edge(m.nEdges(), -1);
+  std::vector<std::array<int, 3>> faces, edgeIds;
+  int nV = 0, nE = 0;
+  for (int f : part) {
+    std::array<int, 3> face{}, ids{};
+    for (int k = 0; k < 3; ++k) {
+      const int v = m.faceVertex(f, k), e = m.edge(HalfedgeMesh::halfedge(f, k));
+      if (vertex[v] < 0) vertex[v] = nV++;
+      if (edge[e] < 0) edge[e] = nE++;
+      face[k] = vertex[v];
+      ids[k] = edge[e];
+    }
+    faces.push_back(face);
+    edgeIds.push_back(ids);
+  }
+  IntrinsicTriangulation sub;
+  sub.mesh = HalfedgeMesh::fromFaces(faces, nV, "", nullptr, edgeIds);
+  if (sub.mesh.nFaces() != static_cast<int>(part.size()) || nV - sub.mesh.nEdges() + sub.mesh.nFaces() != 1)
+    return nullptr;
+  int boundaryHalfedges = 0, boundaryVertices = 0;
+  for (int h = 0; h < sub.mesh.nHalfedges(); ++h) boundaryHalfedges += sub.mesh.twin(h) == kInvalid;
+  for (int v = 0; v < nV; ++v) boundaryVertices += sub.mesh.isBoundaryVertex(v);
+  if (boundaryHalfedges != nV || boundaryVertices != nV) return nullptr;
+  // A part is a subset of an oriented mesh, so its faces keep their order and corners.
+  sub.edgeLengths.resize(sub.mesh.nEdges());
+  for (std::size_t j = 0; j < part.size(); ++j)
+    for (int k = 0; k < 3; ++k)
+      sub.edgeLengths[sub.mesh.edge(HalfedgeMesh::halfedge(static_cast<int>(j), k))] =
+          reference.edgeLengths[m.edge(HalfedgeMesh::halfedge(part[j], k))];
+  return std::make_unique<DiscreteConformalMetric>(std::move(sub), Background::Euclidean);
+}
+
 }  // namespace
 
 std::vector<double> inscribeDiskWithoutInterior(DiscreteConformalMetric& metric) {
@@ -207,6 +272,24 @@ ConvergenceError explainInscribedFailure(const DiscreteConformalMetric& metric, 
       << ": a long strip, whose circle domain crowds its ends exponentially, not resolved to the tolerance in double "
          "precision";
   return ConvergenceError(message.str());
+}
+
+std::string unrepresentableBoundaryPart(const IntrinsicTriangulation& reference) {
+  for (const std::vector<int>& part : allBoundaryParts(reference.mesh)) {
+    if (part.size() < 2) continue;
+    std::unique_ptr<DiscreteConformalMetric> disk = partAsDisk(reference, part);
+    if (!disk) continue;
+    try {
+      inscribeDiskWithoutInterior(*disk);
+    } catch (const ConvergenceError& failed) {
+      std::ostringstream message;
+      message << "the " << part.size() << " faces with every corner on the boundary around face " << part.front()
+              << " (" << disk->nVertices() << " vertices) form a disk without interior vertices, whose circle domain "
+              << "is a Möbius image of that part of this disk's: " << failed.what();
+      return message.str();
+    }
+  }
+  return {};
 }
 
 }  // namespace conformesh::intrinsic::detail

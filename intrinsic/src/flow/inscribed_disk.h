@@ -4,6 +4,7 @@
 // and returns the lengths.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "conformesh/intrinsic/errors.h"
@@ -29,5 +30,14 @@ std::vector<double> inscribeDiskWithoutInterior(DiscreteConformalMetric& metric)
 // double precision. Otherwise `failed` unchanged.
 ConvergenceError explainInscribedFailure(const DiscreteConformalMetric& metric, double tolerance,
                                          const ConvergenceError& failed);
+
+// For a disk with interior vertices whose flow failed (docs/ricci_flow.md §3.3, "Disks without interior vertices"):
+// its faces with all three corners on the boundary, in parts joined across interior edges, are each (when a disk)
+// a triangulated polygon whose circle domain is a Möbius image of that part of the whole disk's (its vertices lie on
+// the circle there too, its faces are concyclic, and vertex scaling keeps its interior edges' cross-ratios). Each
+// part is developed as above; returns why the first one that is not representable in double precision is not
+// (its face count, a face of it in `reference`, its vertex count, the shortest chord), or "" when all are.
+// `reference`: the disk's lengths at u = 0 (Euclidean Penner lengths).
+std::string unrepresentableBoundaryPart(const IntrinsicTriangulation& reference);
 
 }  // namespace conformesh::intrinsic::detail

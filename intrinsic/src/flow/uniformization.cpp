@@ -327,6 +327,14 @@ Uniformization splitBoundaryOnce(const IntrinsicTriangulation& input, const Unif
                                  const UniformizationReport& report, const IntrinsicTriangulation& stalled,
                                  const ConvergenceError& failed, SplitRound split);
 
+// A disk with interior vertices for which every route failed: `what`, and the cause when it is a part of the disk
+// without interior vertices whose circle domain is beyond double precision (inscribed_disk.h; docs/ricci_flow.md
+// §3.3, "Disks without interior vertices"). Only on this failure path, so that nothing that converges changes.
+ConvergenceError diskFailure(const IntrinsicTriangulation& input, const std::string& what) {
+  const std::string part = detail::unrepresentableBoundaryPart(referencePenner(input));
+  return ConvergenceError(part.empty() ? what : what + "; the cause: " + part);
+}
+
 Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const UniformizationOptions& options,
                                       UniformizationReport report, SplitRound splitRound = {}) {
   report.target = UniformizationTarget::CircleDomain;
@@ -412,7 +420,7 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
       startFromDouble(input, *solved, metric);
       flow = solveConformalFlow(metric, target, withProgress(options, "circle domain from the double"), &log);
     } catch (const ConvergenceError& again) {
-      if (!solved) throw ConvergenceError(std::string(failed.what()) + "; from the double's sphere: " + again.what());
+      if (!solved) throw diskFailure(input, std::string(failed.what()) + "; from the double's sphere: " + again.what());
       // The double converged but its boundary edges flipped: take its half, subdivided on the mirror (§3.3).
       if (options.progress)
         options.progress(std::string("circle domain from the double: ") + again.what() +
@@ -420,8 +428,8 @@ Uniformization uniformizeCircleDomain(const IntrinsicTriangulation& input, const
       try {
         return circleDomainFromHalf(input, *solved, options, report);
       } catch (const ConvergenceError& half) {
-        throw ConvergenceError(std::string(failed.what()) + "; from the double's sphere: " + again.what() +
-                               "; its half: " + half.what());
+        throw diskFailure(input, std::string(failed.what()) + "; from the double's sphere: " + again.what() +
+                                     "; its half: " + half.what());
       }
     }
   }
