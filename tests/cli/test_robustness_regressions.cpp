@@ -38,6 +38,29 @@ nlohmann::json uniformizedReport(const std::string& name, const std::string& out
   REQUIRE(r.status == 0);
   return nlohmann::json::parse(r.out);
 }
+// Component `index` of boeing.off (122 components, splitComponents' order) written as its own OFF file `name` in the
+// scratch directory, after checking its vertex and face counts.
+fs::path boeingComponent(int index, std::size_t nVertices, std::size_t nFaces, const std::string& name) {
+  const conformesh::intrinsic::MeshData boeing = conformesh::intrinsic::readMesh(mesh("boeing.off"));
+  const auto components = conformesh::intrinsic::splitComponents(conformesh::intrinsic::toTriangulation(boeing));
+  REQUIRE(components.size() == 122);
+  const conformesh::intrinsic::MeshComponent& c = components[index];
+  REQUIRE(c.vertices.size() == nVertices);
+  REQUIRE(c.faces.size() == nFaces);
+  conformesh::intrinsic::MeshData data;
+  data.nVertices = static_cast<int>(nVertices);
+  for (int v : c.vertices) data.positions.push_back(boeing.positions[v]);
+  for (int f : c.faces) {
+    std::array<int, 3> corners{};
+    for (int k = 0; k < 3; ++k)
+      corners[k] = static_cast<int>(std::lower_bound(c.vertices.begin(), c.vertices.end(), boeing.faces[f][k]) -
+                                    c.vertices.begin());
+    data.faces.push_back(corners);
+  }
+  const fs::path out = conformesh::testing::scratchDir() / name;
+  conformesh::intrinsic::writeMesh(data, out.string());
+  return out;
+}
 }  // namespace
 
 // Before the fix, the check took a Delaunay edge between two corners of one face, going around a cone vertex of
@@ -389,24 +412,7 @@ TEST_CASE("uniformize b9_mesh.off: the double's loop trapezoids, circle domains 
 // circle, to the tolerance 1e-10, and Gauss–Bonnet, the boundary turning Σ (π − Θ) = 2π of a flat disk, to round-off.
 TEST_CASE(
     "uniformize boeing.off's 32-vertex all-boundary strip: on the unit circle to 1e-10 from the written lengths") {
-  const conformesh::intrinsic::MeshData boeing = conformesh::intrinsic::readMesh(mesh("boeing.off"));
-  const auto components = conformesh::intrinsic::splitComponents(conformesh::intrinsic::toTriangulation(boeing));
-  REQUIRE(components.size() == 122);
-  const conformesh::intrinsic::MeshComponent& strip = components[68];
-  REQUIRE(strip.vertices.size() == 32);
-  REQUIRE(strip.faces.size() == 30);
-  conformesh::intrinsic::MeshData data;
-  data.nVertices = 32;
-  for (int v : strip.vertices) data.positions.push_back(boeing.positions[v]);
-  for (int f : strip.faces) {
-    std::array<int, 3> corners{};
-    for (int k = 0; k < 3; ++k)
-      corners[k] = static_cast<int>(std::lower_bound(strip.vertices.begin(), strip.vertices.end(), boeing.faces[f][k]) -
-                                    strip.vertices.begin());
-    data.faces.push_back(corners);
-  }
-  const fs::path in = conformesh::testing::scratchDir() / "boeing_strip68.off";
-  conformesh::intrinsic::writeMesh(data, in.string());
+  const fs::path in = boeingComponent(68, 32, 30, "boeing_strip68.off");
   const fs::path out = conformesh::testing::scratchDir() / "boeing_strip68_circle.ply";
   const auto r = runConformesh("-q uniformize " + in.string() + " -o " + out.string() + " --json");
   INFO(r.err);
@@ -440,24 +446,7 @@ TEST_CASE(
 // ≈ δ²/2 ≈ 1e-27 relative (docs/ricci_flow.md §3.3). The circle-domain flow crawled at 2.93 rad and the double's
 // sphere degenerated (faces flat to round-off, Hessian rows zero), with no cause given; the refusal now names it.
 TEST_CASE("uniformize boeing.off's component 117: refused, citing its all-boundary part beyond double precision") {
-  const conformesh::intrinsic::MeshData boeing = conformesh::intrinsic::readMesh(mesh("boeing.off"));
-  const auto components = conformesh::intrinsic::splitComponents(conformesh::intrinsic::toTriangulation(boeing));
-  REQUIRE(components.size() == 122);
-  const conformesh::intrinsic::MeshComponent& disk = components[117];
-  REQUIRE(disk.vertices.size() == 126);
-  REQUIRE(disk.faces.size() == 125);
-  conformesh::intrinsic::MeshData data;
-  data.nVertices = 126;
-  for (int v : disk.vertices) data.positions.push_back(boeing.positions[v]);
-  for (int f : disk.faces) {
-    std::array<int, 3> corners{};
-    for (int k = 0; k < 3; ++k)
-      corners[k] = static_cast<int>(std::lower_bound(disk.vertices.begin(), disk.vertices.end(), boeing.faces[f][k]) -
-                                    disk.vertices.begin());
-    data.faces.push_back(corners);
-  }
-  const fs::path in = conformesh::testing::scratchDir() / "boeing_disk117.off";
-  conformesh::intrinsic::writeMesh(data, in.string());
+  const fs::path in = boeingComponent(117, 126, 125, "boeing_disk117.off");
   const auto t = conformesh::intrinsic::toTriangulation(conformesh::intrinsic::readMesh(in.string()));
   int interior = 0;
   for (int v = 0; v < t.mesh.nVertices(); ++v) interior += !t.mesh.isBoundaryVertex(v);
