@@ -23,9 +23,9 @@ struct GeodesicHalf {
 // (the flow's Delaunay triangulation of the doubled surface; `log` its flip log back to the double's T0 `doubleInput`,
 // whose faces below `inputFaces` are the input's). The mirror's fixed set is the input's boundary; an edge that crosses
 // it joins v to its mirror image v' and is halved there (a new boundary vertex): a face (v, v', w), w on the boundary,
-// is split along the median from w, and a quad (a, b, b', a') of two crossing edges (one may be a loop at a boundary
-// vertex b = b' that the mirror crosses; an isosceles trapezoid, whose
-// diagonal the flips chose at a tie) along the median from a — lengths by Stewart's theorem in the background geometry.
+// is split along the median from w, and a quad (a, b, b', a') of two crossing edges (an isosceles trapezoid, whose
+// diagonal the flips chose at a tie; one crossing side may be a loop at a boundary vertex b = b' that the mirror
+// crosses) along the median from a — lengths by Stewart's theorem in the background geometry.
 // A face with vertices of one side only is on the side its centroid maps to. Returns the faces on the input's side.
 // Throws ConvergenceError naming the face where the triangulation is not mirror-symmetric (vertices of both sides in
 // another pattern, a centroid on the other side) or a face of the half violates the triangle inequality.

@@ -1,7 +1,6 @@
 // inscribed_disk.h (private) — the circle domain of a disk whose vertices all lie on its boundary (a triangulated
 // polygon), developed face by face onto its circle by cross-ratios in quadruple precision instead of solved by the flow
-// (docs/ricci_flow.md §3.3, "Disks without interior vertices"). Writes the metric's u
-// and returns the lengths.
+// (docs/ricci_flow.md §3.3, "Disks without interior vertices"). Writes the metric's u and returns the lengths.
 #pragma once
 
 #include <string>

@@ -1,7 +1,7 @@
 // supernodal_cholesky.h — Eigen's CHOLMOD supernodal Cholesky wrapper, opened up for the Ricci flow's Newton systems:
 // access to the factor (for SinglePrecisionFactor) and a symbolic analysis in a given elimination order (for
-// nestedDissectionOrder). Private to the flow (flow_solver_cache.cpp, circle_packing.cpp, the annulus bound); touches only the CHOLMOD state it
-// owns.
+// nestedDissectionOrder). Private to the flow (flow_solver_cache.cpp, circle_packing.cpp, the annulus bound in
+// uniformization.cpp); touches only the CHOLMOD state it owns.
 #pragma once
 
 #include <vector>
